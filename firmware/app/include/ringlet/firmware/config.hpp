@@ -1,0 +1,45 @@
+#pragma once
+// The firmware's configuration file (TOML, documented in firmware/README.md): which backend,
+// which world, the simulator, the mission, the executive and its task table. Loading is
+// all-or-nothing: any problem is a ConfigError "file:line:col: key: message" and no config exists.
+// Unknown keys are errors too, so a typo never silently falls back to a default.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ringlet/behaviour/move_to_waypoint.hpp"
+#include "ringlet/executive/realtime.hpp"
+#include "ringlet/executive/task_table.hpp"
+#include "ringlet/sim/sim_robot.hpp"
+
+namespace ringlet::firmware {
+
+class ConfigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class ClockMode { kLockstep, kRealtime };
+
+struct FirmwareConfig {
+  std::filesystem::path source;     // the file it came from
+  std::string backend = "sim";      // robot.backend
+  std::filesystem::path world;      // sim.world, resolved relative to the config file
+  sim::SimConfig sim{};             // sim.* (its period and seed come from executive/sim)
+  behaviour::MoveToWaypointParams follower{};
+  double goal_tolerance = 0.3;      // mission.goal_tolerance_m
+  double timeout_s = 300.0;         // mission.timeout_s: schedule time before giving up
+  ClockMode clock = ClockMode::kLockstep;
+  executive::ExecutiveConfig executive{};
+  executive::RealtimeSettings realtime{};
+  std::vector<executive::TaskSpec> tasks;
+  int trajectory_every = 10;        // telemetry.trajectory_every: frames between samples
+};
+
+[[nodiscard]] FirmwareConfig load_config(const std::filesystem::path& path);
+/// Parses config text; `source` names it in messages, relative paths resolve against `base_dir`.
+[[nodiscard]] FirmwareConfig parse_config(std::string_view text, const std::string& source,
+                                          const std::filesystem::path& base_dir);
+
+}  // namespace ringlet::firmware

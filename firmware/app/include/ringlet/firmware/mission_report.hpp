@@ -1,0 +1,48 @@
+#pragma once
+// What a run achieved, for people (summary on the terminal, SVG picture) and for tools (JSON).
+#include <cstdint>
+#include <filesystem>
+#include <ostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "ringlet/firmware/mission_runner.hpp"
+#include "ringlet/firmware/stack.hpp"
+
+namespace ringlet::firmware {
+
+struct MissionSummary {
+  std::string backend;
+  std::string world;
+  std::uint64_t seed = 0;
+  std::size_t goals_reached = 0;
+  std::size_t goal_count = 0;
+  bool complete = false;
+  double mission_seconds = 0;   // schedule time until the run ended
+  double wall_seconds = 0;
+  double distance_m = 0;        // from wheel odometry
+  std::uint64_t collisions = 0;
+  bool safe_state = false;      // entered before the normal shutdown (failsafe or watchdog)
+  bool failsafe = false;
+  bool watchdog = false;
+  bool interrupted = false;
+  std::uint64_t trajectory_hash = 0;  // FNV-1a over the recorded poses: equal hashes, equal runs
+};
+
+[[nodiscard]] MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, bool safe_before_shutdown);
+
+/// FNV-1a over the bit patterns of the poses.
+[[nodiscard]] std::uint64_t trajectory_hash(std::span<const hal::Pose2> poses) noexcept;
+
+void print_summary(std::ostream& out, const MissionSummary& s);
+[[nodiscard]] nlohmann::json summary_json(const MissionSummary& s);
+
+/// The world with the driven trajectory (sim backend only; returns false otherwise).
+bool write_picture(const std::filesystem::path& path, const FirmwareStack& stack, const MissionSummary& s);
+
+/// Process exit code for a run: 0 mission complete; 3 incomplete (time ran out); 4 the safe state
+/// was forced (failsafe policy or watchdog); 130 interrupted by SIGINT/SIGTERM.
+[[nodiscard]] int exit_code(const MissionSummary& s) noexcept;
+
+}  // namespace ringlet::firmware

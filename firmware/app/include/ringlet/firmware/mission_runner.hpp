@@ -1,0 +1,26 @@
+#pragma once
+// Runs a built stack: real-time settings, the watchdog, a non-real-time thread that prints the
+// executive's events and progress, the executive itself, and the shutdown into the safe state.
+#include <atomic>
+#include <ostream>
+
+#include "ringlet/executive/executive.hpp"
+#include "ringlet/firmware/stack.hpp"
+
+namespace ringlet::firmware {
+
+struct RunOutcome {
+  executive::StopReason reason = executive::StopReason::kFrameLimit;
+  bool interrupted = false;     // SIGINT/SIGTERM
+  bool watchdog_fired = false;
+  double schedule_seconds = 0;  // frames run × period
+  double wall_seconds = 0;      // how long it took on the host
+};
+
+/// Runs at most `duration_s` of schedule time or until the mission ends or the executive's stop
+/// flag is set (the signal handler sets it together with `interrupt`, which the watchdog watches
+/// to command the safe state at once even if the cycle is stuck). Ends in the safe state.
+/// Warnings and events go to `log`.
+RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomic<bool>& interrupt, std::ostream& log);
+
+}  // namespace ringlet::firmware

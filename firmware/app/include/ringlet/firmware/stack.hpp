@@ -1,0 +1,70 @@
+#pragma once
+// The whole controller for one configuration: the backend chosen by robot.backend, the clocks,
+// the tasks and the executive with its table. Everything is allocated here, at start-up; running
+// it allocates nothing. The binary, the tests and the tools all build the controller this way.
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "ringlet/behaviour/waypoint_mission.hpp"
+#include "ringlet/executive/event_log.hpp"
+#include "ringlet/executive/executive.hpp"
+#include "ringlet/firmware/config.hpp"
+#include "ringlet/firmware/cycle_state.hpp"
+#include "ringlet/firmware/tasks.hpp"
+#include "ringlet/firmware/telemetry.hpp"
+#include "ringlet/hal/monotonic_clock.hpp"
+#include "ringlet/hal/virtual_clock.hpp"
+#include "ringlet/sim/sim_robot.hpp"
+
+namespace ringlet::firmware {
+
+class FirmwareStack {
+ public:
+  /// Loads the world (sim backend), builds the robot, tasks and executive. Throws
+  /// sim::WorldError, ConfigError or executive::TableError on bad input.
+  explicit FirmwareStack(const FirmwareConfig& config);
+  ~FirmwareStack();
+  FirmwareStack(const FirmwareStack&) = delete;
+  FirmwareStack& operator=(const FirmwareStack&) = delete;
+
+  [[nodiscard]] const FirmwareConfig& config() const noexcept { return config_; }
+  [[nodiscard]] executive::Executive& executive() noexcept { return *executive_; }
+  [[nodiscard]] const executive::Executive& executive() const noexcept { return *executive_; }
+  [[nodiscard]] hal::Robot& robot() noexcept { return *robot_; }
+  [[nodiscard]] hal::Clock& clock() noexcept;
+  [[nodiscard]] executive::EventLog& events() noexcept { return events_; }
+  [[nodiscard]] const Telemetry& telemetry() const noexcept { return telemetry_; }
+  [[nodiscard]] const behaviour::WaypointMission& mission() const noexcept { return mission_; }
+  /// The simulated robot when robot.backend is "sim", else null.
+  [[nodiscard]] const sim::SimRobot* sim_robot() const noexcept { return sim_; }
+
+  /// Frames in `seconds` of schedule time (rounded up).
+  [[nodiscard]] std::uint64_t frames_for(double seconds) const noexcept;
+
+ private:
+  FirmwareConfig config_;
+  std::unique_ptr<hal::Robot> robot_;
+  const sim::SimRobot* sim_ = nullptr;
+  hal::VirtualClock virtual_clock_;
+  hal::MonotonicClock monotonic_clock_;
+  hal::ThreadStopwatch stopwatch_;
+  executive::EventLog events_;
+  CycleState state_;
+  behaviour::WaypointMission mission_;
+  Telemetry telemetry_;
+  SenseTask sense_;
+  FollowTask follow_;
+  ActuateTask actuate_;
+  TelemetryTask telemetry_task_;
+  std::unique_ptr<executive::Executive> executive_;
+};
+
+/// The backend named by config.backend. "sim" loads config.world; "can" is refused with a
+/// ConfigError until the SocketCAN backend exists.
+[[nodiscard]] std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config);
+
+/// The world's goals as the behaviour layer's waypoints (empty for real backends).
+[[nodiscard]] std::vector<behaviour::Waypoint> mission_goals(const hal::Robot& robot);
+
+}  // namespace ringlet::firmware

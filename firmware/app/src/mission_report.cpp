@@ -1,0 +1,104 @@
+#include "ringlet/firmware/mission_report.hpp"
+
+#include <bit>
+#include <cstdio>
+
+#include "ringlet/sim/world_svg.hpp"
+
+namespace ringlet::firmware {
+
+std::uint64_t trajectory_hash(std::span<const hal::Pose2> poses) noexcept {
+  std::uint64_t h = 1469598103934665603ULL;
+  const auto mix = [&h](double v) {
+    auto bits = std::bit_cast<std::uint64_t>(v);
+    for (int i = 0; i < 8; ++i) {
+      h ^= bits & 0xffU;
+      h *= 1099511628211ULL;
+      bits >>= 8;
+    }
+  };
+  for (const auto& p : poses) {
+    mix(p.x);
+    mix(p.y);
+    mix(p.theta);
+  }
+  return h;
+}
+
+MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, bool safe_before_shutdown) {
+  const auto& cfg = stack.config();
+  MissionSummary s;
+  s.backend = cfg.backend;
+  s.world = cfg.world.filename().string();
+  s.seed = cfg.sim.seed;
+  s.goals_reached = stack.mission().goals_reached();
+  s.goal_count = stack.mission().goal_count();
+  s.complete = stack.mission().complete() && s.goal_count > 0;
+  s.mission_seconds = outcome.schedule_seconds;
+  s.wall_seconds = outcome.wall_seconds;
+  s.distance_m = stack.sim_robot() != nullptr ? stack.sim_robot()->distance_travelled() : 0.0;
+  s.collisions = stack.telemetry().collisions();
+  s.failsafe = stack.executive().failsafe_triggered();
+  s.watchdog = outcome.watchdog_fired;
+  s.safe_state = safe_before_shutdown;
+  s.interrupted = outcome.interrupted;
+  s.trajectory_hash = trajectory_hash(stack.telemetry().trajectory());
+  return s;
+}
+
+void print_summary(std::ostream& out, const MissionSummary& s) {
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "MISSION %s — %zu/%zu goals in %.2f s (simulated on %s, %.3f s of host time)\n"
+                "  world %s, seed %llu, distance %.2f m, collisions %llu, safe state forced: %s%s%s\n"
+                "  trajectory hash %016llx\n",
+                s.complete ? "COMPLETE" : (s.interrupted ? "INTERRUPTED" : "INCOMPLETE"), s.goals_reached,
+                s.goal_count, s.mission_seconds, s.backend.c_str(), s.wall_seconds, s.world.c_str(),
+                static_cast<unsigned long long>(s.seed), s.distance_m, static_cast<unsigned long long>(s.collisions),
+                s.safe_state ? "yes" : "no", s.failsafe ? " (failsafe policy)" : "", s.watchdog ? " (watchdog)" : "",
+                static_cast<unsigned long long>(s.trajectory_hash));
+  out << line;
+}
+
+nlohmann::json summary_json(const MissionSummary& s) {
+  char hash[20];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(s.trajectory_hash));
+  return {{"backend", s.backend},
+          {"world", s.world},
+          {"seed", s.seed},
+          {"goals_reached", s.goals_reached},
+          {"goal_count", s.goal_count},
+          {"complete", s.complete},
+          {"mission_seconds", s.mission_seconds},
+          {"host_seconds", s.wall_seconds},
+          {"distance_m", s.distance_m},
+          {"collisions", s.collisions},
+          {"safe_state_forced", s.safe_state},
+          {"failsafe", s.failsafe},
+          {"watchdog", s.watchdog},
+          {"interrupted", s.interrupted},
+          {"trajectory_hash", hash}};
+}
+
+bool write_picture(const std::filesystem::path& path, const FirmwareStack& stack, const MissionSummary& s) {
+  const auto* sim = stack.sim_robot();
+  if (sim == nullptr) return false;
+  std::vector<sim::Vec2> collisions;
+  for (const auto& c : stack.telemetry().collision_points()) collisions.push_back({c.x, c.y});
+  char caption[256];
+  std::snprintf(caption, sizeof caption, "%s: %zu/%zu goals in %.1f s, %.1f m, %llu collisions (seed %llu)",
+                s.world.c_str(), s.goals_reached, s.goal_count, s.mission_seconds, s.distance_m,
+                static_cast<unsigned long long>(s.collisions), static_cast<unsigned long long>(s.seed));
+  sim::write_world_svg(path, sim->world(),
+                       sim::RunOverlay{stack.telemetry().trajectory(), collisions, s.goals_reached, caption});
+  return true;
+}
+
+int exit_code(const MissionSummary& s) noexcept {
+  if (s.interrupted) return 130;
+  if (s.safe_state) return 4;
+  if (!s.complete) return 3;
+  return 0;
+}
+
+}  // namespace ringlet::firmware

@@ -1,0 +1,98 @@
+#include "ringlet/firmware/mission_runner.hpp"
+
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "ringlet/executive/realtime.hpp"
+#include "ringlet/executive/report.hpp"
+#include "ringlet/executive/watchdog.hpp"
+
+namespace ringlet::firmware {
+namespace {
+
+// The non-real-time side of a run: prints what the cycle reported through the event log, and a
+// progress line every few seconds. It never touches the cycle's data except through atomics.
+class Narrator {
+ public:
+  Narrator(FirmwareStack& stack, std::ostream& log, double total_s)
+      : stack_(stack), log_(log), total_s_(total_s), thread_([this] { loop(); }) {}
+  ~Narrator() {
+    {
+      std::lock_guard lock(mutex_);
+      done_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+    drain();
+  }
+  Narrator(const Narrator&) = delete;
+  Narrator& operator=(const Narrator&) = delete;
+
+ private:
+  void loop() {
+    using namespace std::chrono_literals;
+    auto next_progress = std::chrono::steady_clock::now() + 2s;
+    std::unique_lock lock(mutex_);
+    while (!wake_.wait_for(lock, 20ms, [this] { return done_; })) {
+      drain();
+      if (std::chrono::steady_clock::now() >= next_progress) {
+        next_progress += 2s;
+        const auto frames = stack_.executive().heartbeat().load(std::memory_order_acquire);
+        const double t = static_cast<double>(frames) * hal::to_seconds(stack_.config().executive.period);
+        log_ << "ringlet: running: " << t << " s of at most " << total_s_ << " s (" << frames << " frames)\n"
+             << std::flush;
+      }
+    }
+  }
+  void drain() {
+    executive::Event e;
+    while (stack_.events().pop(e)) log_ << "ringlet: " << executive::describe(e, stack_.executive()) << '\n';
+  }
+
+  FirmwareStack& stack_;
+  std::ostream& log_;
+  double total_s_;
+  std::mutex mutex_;  // guards done_ only; the cycle never takes it
+  std::condition_variable wake_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
+}  // namespace
+
+RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomic<bool>& interrupt, std::ostream& log) {
+  const auto& cfg = stack.config();
+  for (const auto& w : executive::apply_realtime_settings(cfg.realtime)) log << "ringlet: warning: " << w << '\n';
+
+  auto& exec = stack.executive();
+  auto& actuators = stack.robot().actuators();
+  RunOutcome outcome;
+  const auto wall_start = std::chrono::steady_clock::now();
+  {
+    hal::MonotonicClock watchdog_clock;  // the watchdog always watches real time
+    std::optional<executive::WatchdogThread> watchdog;
+    if (cfg.executive.watchdog_periods > 0) {
+      const auto timeout = cfg.executive.period * cfg.executive.watchdog_periods;
+      const auto poll = std::max(cfg.executive.period / 2, hal::Nanos{1'000'000});
+      watchdog.emplace(watchdog_clock, exec.heartbeat(), actuators, timeout, poll, &interrupt);
+    }
+    {
+      Narrator narrator(stack, log, duration_s);
+      outcome.reason = exec.run(stack.frames_for(duration_s));
+    }
+    if (watchdog) {
+      watchdog->stop();
+      outcome.watchdog_fired = watchdog->fired();
+    }
+  }
+  actuators.enter_safe_state();  // clean shutdown: motors stopped, head held
+  outcome.interrupted = interrupt.load();
+  outcome.schedule_seconds = static_cast<double>(exec.next_frame()) * hal::to_seconds(cfg.executive.period);
+  outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return outcome;
+}
+
+}  // namespace ringlet::firmware

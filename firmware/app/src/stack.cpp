@@ -1,0 +1,73 @@
+#include "ringlet/firmware/stack.hpp"
+
+#include <cmath>
+
+namespace ringlet::firmware {
+namespace {
+
+std::vector<executive::TaskBinding> bind(const std::vector<executive::TaskSpec>& table,
+                                         std::initializer_list<std::pair<const char*, executive::Task*>> provided,
+                                         const std::string& source) {
+  std::vector<executive::TaskBinding> bound;
+  std::vector<std::string> problems;
+  for (const auto& spec : table) {
+    executive::Task* task = nullptr;
+    for (const auto& [name, impl] : provided) {
+      if (spec.name == name) task = impl;
+    }
+    if (task == nullptr) {
+      std::string names;
+      for (const auto& p : provided) names += (names.empty() ? "" : ", ") + std::string(p.first);
+      problems.push_back("task '" + spec.name + "' is not a task this firmware provides (" + names + ")");
+    }
+    bound.push_back({spec, task});
+  }
+  for (const auto& [name, impl] : provided) {
+    bool listed = false;
+    for (const auto& spec : table) listed = listed || spec.name == name;
+    if (!listed) problems.push_back("task '" + std::string(name) + "' is missing from the table: every task must be scheduled");
+  }
+  if (!problems.empty()) {
+    std::string text = source + ": executive.tasks:";
+    for (const auto& p : problems) text += "\n  - " + p;
+    throw ConfigError(text);
+  }
+  return bound;
+}
+
+std::size_t trajectory_capacity(const FirmwareConfig& c) {
+  const double frames = c.timeout_s * 1e9 / static_cast<double>(c.executive.period.count());
+  return static_cast<std::size_t>(std::ceil(frames / c.trajectory_every)) + 2;
+}
+
+}  // namespace
+
+FirmwareStack::FirmwareStack(const FirmwareConfig& config)
+    : config_(config),
+      robot_(make_robot(config_)),
+      sim_(dynamic_cast<const sim::SimRobot*>(robot_.get())),
+      mission_(mission_goals(*robot_), config_.goal_tolerance, config_.follower),
+      telemetry_(trajectory_capacity(config_), 1024, mission_.goal_count()),
+      sense_(robot_->sensors(), state_),
+      follow_(mission_, state_),
+      actuate_(robot_->actuators(), state_),
+      telemetry_task_(telemetry_, mission_, state_, config_.trajectory_every) {
+  auto tasks = bind(config_.tasks,
+                    {{"sense", &sense_}, {"follow", &follow_}, {"actuate", &actuate_}, {"telemetry", &telemetry_task_}},
+                    config_.source.string());
+  executive_ = std::make_unique<executive::Executive>(config_.executive, std::move(tasks), clock(), stopwatch_,
+                                                      robot_->actuators(), &events_);
+}
+
+FirmwareStack::~FirmwareStack() = default;
+
+hal::Clock& FirmwareStack::clock() noexcept {
+  if (config_.clock == ClockMode::kRealtime) return monotonic_clock_;
+  return virtual_clock_;
+}
+
+std::uint64_t FirmwareStack::frames_for(double seconds) const noexcept {
+  return static_cast<std::uint64_t>(std::ceil(seconds * 1e9 / static_cast<double>(config_.executive.period.count())));
+}
+
+}  // namespace ringlet::firmware

@@ -1,0 +1,29 @@
+#include "ringlet/firmware/telemetry.hpp"
+
+namespace ringlet::firmware {
+
+Telemetry::Telemetry(std::size_t trajectory_capacity, std::size_t collision_capacity, std::size_t goal_count) {
+  trajectory_.reserve(trajectory_capacity);
+  collision_points_.reserve(collision_capacity);
+  goal_times_.reserve(goal_count);
+}
+
+// push_back below never reallocates: each is guarded by the capacity reserved at start-up.
+void Telemetry::record_pose(const hal::Pose2& pose) noexcept {
+  if (trajectory_.size() < trajectory_.capacity()) {
+    trajectory_.push_back(pose);
+  } else {
+    ++dropped_;
+  }
+}
+
+void Telemetry::record_collision(const hal::Pose2& pose) noexcept {
+  ++collisions_;
+  if (collision_points_.size() < collision_points_.capacity()) collision_points_.push_back({pose.x, pose.y});
+}
+
+void Telemetry::record_goal(std::size_t goals_reached, hal::Nanos when) noexcept {
+  while (goal_times_.size() < goals_reached && goal_times_.size() < goal_times_.capacity()) goal_times_.push_back(when);
+}
+
+}  // namespace ringlet::firmware

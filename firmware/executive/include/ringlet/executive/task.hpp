@@ -1,0 +1,40 @@
+#pragma once
+// What the executive hands a task each activation, and the interface a task implements.
+#include <atomic>
+#include <cstdint>
+
+#include "ringlet/hal/clock.hpp"
+
+namespace ringlet::executive {
+
+using hal::Nanos;
+
+/// One activation's view of time. `now` and `deadline` are on the executive's schedule clock
+/// (virtual in lockstep simulation); `out_of_time()` asks the measuring stopwatch, so budgeted
+/// work can stop in time and resume at its next activation.
+struct TaskContext {
+  std::uint64_t frame = 0;  // frame number since start; frames lost to a slip are counted too
+  Nanos frame_start{0};     // when this frame was due
+  Nanos now{0};             // when this activation started
+  Nanos deadline{0};        // min(now + budget, frame_start + period)
+  Nanos period{0};          // the base period
+  int degrade_level = 0;    // 0: full work; >0: do less (raised by the degrade overrun policy)
+
+  const hal::Stopwatch* stopwatch = nullptr;
+  Nanos started_wall{0};  // stopwatch reading when the activation started
+  Nanos budget{0};        // deadline - now, on the stopwatch
+  std::atomic<bool>* stop_flag = nullptr;
+
+  [[nodiscard]] Nanos time_left() const noexcept { return budget - (stopwatch->wall_now() - started_wall); }
+  [[nodiscard]] bool out_of_time() const noexcept { return time_left() <= Nanos{0}; }
+  /// Ends the run after this frame (e.g. the mission is complete).
+  void request_stop() const noexcept { stop_flag->store(true, std::memory_order_relaxed); }
+};
+
+class Task {
+ public:
+  virtual ~Task() = default;
+  virtual void run(const TaskContext& ctx) noexcept = 0;
+};
+
+}  // namespace ringlet::executive

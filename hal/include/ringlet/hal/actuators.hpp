@@ -1,0 +1,20 @@
+#pragma once
+// What the controller commands: u = (kappa, v) of eq. (17) and the head's yaw/pitch.
+namespace ringlet::hal {
+
+struct DriveCommand {
+  double curvature = 0.0;  // kappa, 1/m (positive turns clockwise, see geometry.hpp)
+  double velocity = 0.0;   // v, m/s
+};
+
+struct HeadCommand {
+  double yaw = 0.0;
+  double pitch = 0.0;
+};
+
+struct ActuatorCommand {
+  DriveCommand drive{};
+  HeadCommand head{};
+};
+
+}  // namespace ringlet::hal

@@ -1,0 +1,69 @@
+#pragma once
+// Everything the robot senses in one cycle, as plain fixed-size data: reading it never allocates.
+#include <array>
+#include <cstdint>
+
+#include "ringlet/hal/geometry.hpp"
+#include "ringlet/hal/time.hpp"
+
+namespace ringlet::hal {
+
+/// y = (x, y, theta), eq. (19): a GPS-like measurement of the robot's own pose.
+struct PoseMeasurement {
+  Nanos stamp{0};
+  Pose2 pose{};
+  bool valid = false;
+};
+
+/// Wheel odometry of the car-like base: distance travelled since start, and the measured
+/// control u = (kappa, v) of eq. (17).
+struct WheelOdometry {
+  Nanos stamp{0};
+  double distance = 0.0;   // metres, integrated, signed
+  double velocity = 0.0;   // m/s
+  double curvature = 0.0;  // 1/m
+};
+
+/// Head joint angles in radians: yaw positive to the left, pitch positive down.
+struct HeadJoints {
+  double yaw = 0.0;
+  double pitch = 0.0;
+};
+
+struct PowerState {
+  double battery_volts = 0.0;
+  double bus_volts = 0.0;
+};
+
+/// A planar range scan, eq. (20): beam i looks at angle `angle_min + i * angle_increment` in the
+/// robot frame (0 = straight ahead, positive towards the robot's right, like theta). A beam is
+/// valid when an occupied point lies within the maximum range Delta; an invalid beam is the
+/// paper's phi (nothing seen), never a fake range.
+struct LaserScan {
+  static constexpr std::size_t kMaxBeams = 721;
+
+  Nanos stamp{0};
+  std::uint16_t beam_count = 0;
+  double angle_min = 0.0;
+  double angle_increment = 0.0;
+  double max_range = 0.0;  // Delta, metres
+  std::array<float, kMaxBeams> range{};
+  std::array<bool, kMaxBeams> valid{};
+
+  [[nodiscard]] double beam_angle(std::size_t i) const noexcept {
+    return angle_min + static_cast<double>(i) * angle_increment;
+  }
+};
+
+/// One cycle's sensor reading, filled by the backend in place.
+struct SensorFrame {
+  Nanos stamp{0};
+  PoseMeasurement pose{};
+  WheelOdometry odometry{};
+  HeadJoints head{};
+  PowerState power{};
+  LaserScan laser{};
+  bool collided = false;  // the base's bumper: touching an obstacle right now
+};
+
+}  // namespace ringlet::hal

@@ -1,0 +1,81 @@
+#pragma once
+// The simulated robot: a hal::Robot backend over a World. Lockstep: every Sensors::read() advances
+// the world by exactly one executive period, then measures it, so a run depends only on the
+// world, the configuration and the seed — never on how fast the host is or which clock paces it.
+// One seeded RNG (std::mt19937_64) feeds all noise.
+#include <atomic>
+#include <cstdint>
+#include <random>
+
+#include "ringlet/hal/robot.hpp"
+#include "ringlet/sim/kinematics.hpp"
+#include "ringlet/sim/world.hpp"
+
+namespace ringlet::sim {
+
+struct SimConfig {
+  hal::Nanos period{10'000'000};  // one executive period per read()
+  std::uint64_t seed = 1;
+  CarLimits limits{};
+  double robot_radius = 0.25;     // m, the footprint used for collisions
+  double gps_sigma_xy = 0.0;      // m, Gaussian noise on the GPS pose (eq. 19)
+  double gps_sigma_theta = 0.0;   // rad
+  int laser_beams = 181;          // N, at most hal::LaserScan::kMaxBeams
+  double laser_fov = 3.14159265358979323846;  // rad, centred straight ahead
+  double laser_range = 8.0;       // Delta, m
+  double laser_sigma = 0.0;       // m, Gaussian noise on valid ranges
+  double head_max_rate = 4.0;     // rad/s the simulated head joints can move
+  double battery_volts = 12.6;    // start voltage; drains slowly with distance driven
+};
+
+/// Throws std::invalid_argument naming the field when a value is out of range.
+void validate(const SimConfig& config);
+
+class SimRobot final : public hal::Robot, private hal::Sensors, private hal::Actuators {
+ public:
+  /// Validates the configuration and checks the start pose is collision-free (throws otherwise).
+  SimRobot(World world, const SimConfig& config);
+
+  // hal::Robot
+  [[nodiscard]] std::string_view backend_name() const noexcept override { return "sim"; }
+  hal::Sensors& sensors() noexcept override { return *this; }
+  hal::Actuators& actuators() noexcept override { return *this; }
+  hal::Camera* camera() noexcept override { return nullptr; }
+
+  // Ground truth, for telemetry, pictures and tests (never for the controller's logic).
+  [[nodiscard]] const World& world() const noexcept { return world_; }
+  [[nodiscard]] const CarState& true_state() const noexcept { return state_; }
+  [[nodiscard]] hal::Nanos sim_time() const noexcept { return time_; }
+  [[nodiscard]] std::uint64_t steps() const noexcept { return steps_; }
+  [[nodiscard]] std::uint64_t collisions() const noexcept { return collisions_; }  // contact events
+  [[nodiscard]] double distance_travelled() const noexcept { return distance_; }
+  [[nodiscard]] const SimConfig& config() const noexcept { return config_; }
+
+ private:
+  // hal::Sensors
+  bool read(hal::SensorFrame& out) noexcept override;
+  // hal::Actuators
+  void write(const hal::ActuatorCommand& cmd) noexcept override;
+  void enter_safe_state() noexcept override;
+  [[nodiscard]] bool in_safe_state() const noexcept override;
+
+  void step() noexcept;
+  void measure(hal::SensorFrame& out) noexcept;
+
+  World world_;
+  SimConfig config_;
+  std::mt19937_64 rng_;
+  std::normal_distribution<double> unit_normal_{0.0, 1.0};
+  CarState state_{};
+  hal::HeadJoints head_{};
+  hal::ActuatorCommand command_{};
+  std::atomic<bool> safe_{false};
+  bool in_contact_ = false;
+  hal::Nanos time_{0};
+  std::uint64_t steps_ = 0;
+  std::uint64_t collisions_ = 0;
+  double distance_ = 0.0;           // path length driven, |v| dt summed: battery drain, statistics
+  double odometry_distance_ = 0.0;  // v dt summed, signed like hal::WheelOdometry::distance
+};
+
+}  // namespace ringlet::sim

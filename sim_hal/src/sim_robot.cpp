@@ -1,0 +1,150 @@
+// The lockstep simulated robot: read() moves the world one period and measures it; write() only
+// stores the command that the next read() will apply. Nothing here allocates after construction.
+#include "ringlet/sim/sim_robot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "number_text.hpp"
+#include "ringlet/sim/collision.hpp"
+
+namespace ringlet::sim {
+namespace {
+
+/// Battery model: a linear drain with distance driven, and a fixed drop to the bus behind it.
+constexpr double kBatteryVoltsPerMetre = 0.01;
+constexpr double kBusDropVolts = 0.2;
+
+/// A bumped robot stops at its last free pose, up to one step of travel short of the obstacle.
+/// The bumper stays pressed until it has backed off by more than that (plus a micrometre for the
+/// boundary case), so that creeping forward again is the same contact, not a new one.
+double contact_release_distance(const SimConfig& config) noexcept {
+  return config.limits.max_speed * hal::to_seconds(config.period) + 1e-6;
+}
+
+/// Moves `current` towards `target` by at most `max_change`; a non-finite target holds still.
+double approach(double current, double target, double max_change) noexcept {
+  if (!std::isfinite(target)) return current;
+  return current + std::clamp(target - current, -max_change, max_change);
+}
+
+}  // namespace
+
+SimRobot::SimRobot(World world, const SimConfig& config)
+    : world_(std::move(world)), config_(config), rng_(config.seed) {
+  validate(config_);
+  state_.pose = world_.start;
+  if (disc_collides(world_, Vec2{state_.pose.x, state_.pose.y}, config_.robot_radius)) {
+    throw std::invalid_argument("start pose (" + detail::format_number(state_.pose.x) + ", " +
+                                detail::format_number(state_.pose.y) +
+                                ") collides with an obstacle or the bounds");
+  }
+}
+
+bool SimRobot::read(hal::SensorFrame& out) noexcept {
+  step();
+  measure(out);
+  return true;
+}
+
+void SimRobot::write(const hal::ActuatorCommand& cmd) noexcept {
+  if (safe_.load(std::memory_order_acquire)) return;
+  command_ = cmd;
+}
+
+void SimRobot::enter_safe_state() noexcept { safe_.store(true, std::memory_order_release); }
+
+bool SimRobot::in_safe_state() const noexcept { return safe_.load(std::memory_order_acquire); }
+
+void SimRobot::step() noexcept {
+  const double dt = hal::to_seconds(config_.period);
+  const bool safe = safe_.load(std::memory_order_acquire);
+
+  // Safe state: the drive is commanded to stop with the steering where it is. The speed still
+  // falls at the acceleration limit, as a real drive's would; it does not vanish in one step.
+  const hal::DriveCommand drive = safe ? hal::DriveCommand{state_.curvature, 0.0} : command_.drive;
+  const CarState next = step_car(state_, drive, config_.limits, dt);
+
+  if (disc_collides(world_, Vec2{next.pose.x, next.pose.y}, config_.robot_radius)) {
+    // Blocked: stay at the last free pose, wheels stopped. One contact is one event however
+    // long the controller keeps pushing.
+    state_.velocity = 0.0;
+    state_.curvature = next.curvature;
+    if (!in_contact_) {
+      ++collisions_;
+      in_contact_ = true;
+    }
+  } else {
+    const double travelled = next.velocity * dt;
+    distance_ += std::fabs(travelled);
+    odometry_distance_ += travelled;
+    state_ = next;
+    if (in_contact_ && !disc_collides(world_, Vec2{state_.pose.x, state_.pose.y},
+                                      config_.robot_radius + contact_release_distance(config_))) {
+      in_contact_ = false;
+    }
+  }
+
+  if (!safe) {
+    const double max_change = config_.head_max_rate * dt;
+    head_.yaw = approach(head_.yaw, command_.head.yaw, max_change);
+    head_.pitch = approach(head_.pitch, command_.head.pitch, max_change);
+  }
+
+  time_ += config_.period;
+  ++steps_;
+}
+
+void SimRobot::measure(hal::SensorFrame& out) noexcept {
+  // Noise is drawn only for a non-zero sigma, always in this order: x, y, theta, then one draw
+  // per laser hit in beam order. Same world, config and seed therefore give the same frames.
+  const auto noise = [this](double sigma) { return sigma > 0.0 ? sigma * unit_normal_(rng_) : 0.0; };
+  const hal::Pose2& pose = state_.pose;
+
+  out.stamp = time_;
+
+  out.pose.stamp = time_;
+  out.pose.pose.x = pose.x + noise(config_.gps_sigma_xy);
+  out.pose.pose.y = pose.y + noise(config_.gps_sigma_xy);
+  out.pose.pose.theta = hal::wrap_angle(pose.theta + noise(config_.gps_sigma_theta));
+  out.pose.valid = true;
+
+  out.odometry.stamp = time_;
+  out.odometry.distance = odometry_distance_;
+  out.odometry.velocity = state_.velocity;
+  out.odometry.curvature = state_.curvature;
+
+  out.head = head_;
+
+  out.power.battery_volts = std::max(0.0, config_.battery_volts - kBatteryVoltsPerMetre * distance_);
+  out.power.bus_volts = std::max(0.0, out.power.battery_volts - kBusDropVolts);
+
+  hal::LaserScan& scan = out.laser;
+  const auto beams = static_cast<std::size_t>(config_.laser_beams);
+  scan.stamp = time_;
+  scan.beam_count = static_cast<std::uint16_t>(beams);
+  scan.angle_min = beams == 1 ? 0.0 : -0.5 * config_.laser_fov;
+  scan.angle_increment = beams == 1 ? 0.0 : config_.laser_fov / static_cast<double>(beams - 1);
+  scan.max_range = config_.laser_range;
+  const Vec2 origin{pose.x, pose.y};
+  for (std::size_t i = 0; i < beams; ++i) {
+    const double hit = cast_ray(world_, origin, pose.theta + scan.beam_angle(i), config_.laser_range);
+    if (std::isfinite(hit)) {
+      const double noisy = std::clamp(hit + noise(config_.laser_sigma), 0.0, config_.laser_range);
+      scan.range[i] = static_cast<float>(noisy);
+      scan.valid[i] = true;
+    } else {
+      scan.range[i] = 0.0F;  // nothing seen: phi of eq. (20), never a fake range
+      scan.valid[i] = false;
+    }
+  }
+  // Unused slots are cleared so a frame never carries a stale reading from an earlier scan.
+  std::fill(scan.range.begin() + static_cast<std::ptrdiff_t>(beams), scan.range.end(), 0.0F);
+  std::fill(scan.valid.begin() + static_cast<std::ptrdiff_t>(beams), scan.valid.end(), false);
+
+  out.collided = in_contact_;
+}
+
+}  // namespace ringlet::sim

@@ -1,0 +1,318 @@
+// The world file reader: one statement per line, checked as it is read; the checks that need the
+// bounds run after the last line, because the format does not force bounds to come first.
+// Everything goes into a local World that is returned only when the whole file was accepted.
+#include <cerrno>
+#include <array>
+#include <cstdio>
+#include <memory>
+#include <span>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "polygon_check.hpp"
+#include "ringlet/sim/world.hpp"
+#include "world_lexer.hpp"
+
+namespace ringlet::sim {
+namespace {
+
+using detail::Token;
+
+constexpr std::string_view kHeaderKeyword = "ringlet-world";
+
+struct Statement {
+  int line = 0;
+  std::string_view keyword;
+  std::span<const Token> args;
+};
+
+/// A point that must lie inside the bounds. Checked after the last line, in file order.
+struct PlacedPoint {
+  int line = 0;
+  std::string_view keyword;
+  std::string label;  // "centre", "vertex 3", ... or empty when the object is a single point
+  Token x;
+  Token y;
+  Vec2 at;
+};
+
+/// A token as the author wrote it, for quoting it back in a message.
+std::string as_written(const Token& token) {
+  return token.quoted ? "\"" + std::string(token.text) + "\"" : std::string(token.text);
+}
+
+class WorldParser {
+ public:
+  explicit WorldParser(std::string_view source) : source_(source) {}
+
+  World parse(std::string_view text) {
+    std::vector<Token> tokens;
+    int line = 0;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+      ++line;
+      const std::size_t newline = text.find('\n', pos);
+      const std::size_t end = newline == std::string_view::npos ? text.size() : newline;
+      if (const auto error = detail::split_tokens(text.substr(pos, end - pos), tokens)) fail(line, *error);
+      pos = end + 1;
+      if (tokens.empty()) continue;
+      if (tokens.front().quoted) fail(line, "unknown keyword " + as_written(tokens.front()));
+      dispatch(Statement{line, tokens.front().text, std::span<const Token>(tokens).subspan(1)});
+    }
+    check_complete(line < 1 ? 1 : line);
+    check_inside_bounds();
+    return std::move(world_);
+  }
+
+ private:
+  [[noreturn]] void fail(int line, std::string_view message) const {
+    throw WorldError(std::string(source_) + ":" + std::to_string(line) + ": " + std::string(message));
+  }
+
+  void dispatch(const Statement& s) {
+    if (header_line_ == 0) {
+      if (s.keyword != kHeaderKeyword) {
+        fail(s.line, "missing header: the first line must be 'ringlet-world " +
+                         std::to_string(World::kFormatVersion) + "', got '" + std::string(s.keyword) + "'");
+      }
+      header(s);
+    } else if (s.keyword == kHeaderKeyword) {
+      duplicate(s, header_line_);
+    } else if (s.keyword == "name") {
+      name(s);
+    } else if (s.keyword == "bounds") {
+      bounds(s);
+    } else if (s.keyword == "start") {
+      start(s);
+    } else if (s.keyword == "circle") {
+      circle(s);
+    } else if (s.keyword == "polygon") {
+      polygon(s);
+    } else if (s.keyword == "marking") {
+      marking(s);
+    } else if (s.keyword == "ball") {
+      ball(s);
+    } else if (s.keyword == "goal") {
+      goal(s);
+    } else {
+      fail(s.line, "unknown keyword '" + std::string(s.keyword) +
+                       "' (expected name, bounds, start, circle, polygon, marking, ball or goal)");
+    }
+  }
+
+  // --- argument helpers -------------------------------------------------------------------------
+
+  std::string prefix(const Statement& s) const { return std::string(s.keyword) + ": "; }
+
+  void expect_args(const Statement& s, std::size_t min, std::size_t max, std::string_view usage) const {
+    const std::size_t got = s.args.size();
+    if (got >= min && got <= max) return;
+    const std::string count =
+        min == max ? std::to_string(min) : std::to_string(min) + " or " + std::to_string(max);
+    fail(s.line, prefix(s) + "expected " + count + (max == 1 ? " argument" : " arguments") + " (" +
+                     std::string(usage) + "), got " + std::to_string(got));
+  }
+
+  double number(const Statement& s, std::size_t index, std::string_view what) const {
+    const Token& token = s.args[index];
+    const detail::NumberResult result = detail::parse_number(token);
+    using Status = detail::NumberResult::Status;
+    switch (result.status) {
+      case Status::kOk:
+        return result.value;
+      case Status::kOutOfRange:
+        fail(s.line, prefix(s) + std::string(what) + " is out of range: '" + as_written(token) + "'");
+      case Status::kNotFinite:
+        fail(s.line, prefix(s) + std::string(what) + " must be finite, got '" + as_written(token) + "'");
+      case Status::kNotANumber:
+        break;
+    }
+    fail(s.line, prefix(s) + std::string(what) + " is not a number: '" + as_written(token) + "'");
+  }
+
+  double positive(const Statement& s, std::size_t index, std::string_view what) const {
+    const double value = number(s, index, what);
+    if (!(value > 0.0)) {
+      fail(s.line, prefix(s) + std::string(what) + " must be > 0, got " + as_written(s.args[index]));
+    }
+    return value;
+  }
+
+  Vec2 point(const Statement& s, std::size_t index, std::string_view x_name, std::string_view y_name,
+             std::string label) {
+    const Vec2 at{number(s, index, x_name), number(s, index + 1, y_name)};
+    placed_.push_back(PlacedPoint{s.line, s.keyword, std::move(label), s.args[index], s.args[index + 1], at});
+    return at;
+  }
+
+  [[noreturn]] void duplicate(const Statement& s, int first_line) const {
+    fail(s.line, prefix(s) + "given twice (first on line " + std::to_string(first_line) + ")");
+  }
+
+  // --- statements -------------------------------------------------------------------------------
+
+  void header(const Statement& s) {
+    expect_args(s, 1, 1, "version");
+    const std::optional<int> version = detail::parse_integer(s.args[0]);
+    if (!version) fail(s.line, prefix(s) + "version must be an integer, got '" + as_written(s.args[0]) + "'");
+    if (*version != World::kFormatVersion) {
+      fail(s.line, prefix(s) + "unsupported version " + std::to_string(*version) + " (this build reads version " +
+                       std::to_string(World::kFormatVersion) + ")");
+    }
+    header_line_ = s.line;
+  }
+
+  void name(const Statement& s) {
+    if (name_line_ != 0) duplicate(s, name_line_);
+    if (s.args.size() != 1 || !s.args[0].quoted) {
+      fail(s.line, prefix(s) + "expected one quoted string, e.g. name \"Courtyard\"");
+    }
+    world_.name = std::string(s.args[0].text);
+    name_line_ = s.line;
+  }
+
+  void bounds(const Statement& s) {
+    if (bounds_line_ != 0) duplicate(s, bounds_line_);
+    expect_args(s, 4, 4, "xmin ymin xmax ymax");
+    const Vec2 min{number(s, 0, "xmin"), number(s, 1, "ymin")};
+    const Vec2 max{number(s, 2, "xmax"), number(s, 3, "ymax")};
+    if (!(min.x < max.x)) {
+      fail(s.line, prefix(s) + "xmin (" + as_written(s.args[0]) + ") must be < xmax (" + as_written(s.args[2]) + ")");
+    }
+    if (!(min.y < max.y)) {
+      fail(s.line, prefix(s) + "ymin (" + as_written(s.args[1]) + ") must be < ymax (" + as_written(s.args[3]) + ")");
+    }
+    world_.min = min;
+    world_.max = max;
+    bounds_text_ = std::string(s.args[0].text) + " " + std::string(s.args[1].text) + " " +
+                   std::string(s.args[2].text) + " " + std::string(s.args[3].text);
+    bounds_line_ = s.line;
+  }
+
+  void start(const Statement& s) {
+    if (start_line_ != 0) duplicate(s, start_line_);
+    expect_args(s, 3, 3, "x y heading_deg");
+    const Vec2 at = point(s, 0, "x", "y", "");
+    const double heading_deg = number(s, 2, "heading_deg");
+    world_.start = hal::Pose2{at.x, at.y, hal::wrap_angle(hal::deg_to_rad(heading_deg))};
+    start_line_ = s.line;
+  }
+
+  void circle(const Statement& s) {
+    expect_args(s, 3, 3, "x y radius");
+    const Vec2 centre = point(s, 0, "x", "y", "centre");
+    world_.circles.push_back(Circle{centre, positive(s, 2, "radius")});
+  }
+
+  void polygon(const Statement& s) {
+    if (s.args.size() % 2 != 0) {
+      fail(s.line, prefix(s) + "expected x y pairs, got an odd number of coordinates (" +
+                       std::to_string(s.args.size()) + ")");
+    }
+    const std::size_t count = s.args.size() / 2;
+    if (count < 3) fail(s.line, prefix(s) + "needs at least 3 vertices, got " + std::to_string(count));
+    Polygon result;
+    result.vertices.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::string n = std::to_string(i + 1);
+      result.vertices.push_back(point(s, 2 * i, "x" + n, "y" + n, "vertex " + n));
+    }
+    if (const auto defect = detail::find_polygon_defect(result.vertices)) {
+      const std::string first = std::to_string(defect->first + 1);
+      const std::string second = std::to_string(defect->second + 1);
+      if (defect->kind == detail::PolygonDefect::Kind::kRepeatedVertex) {
+        fail(s.line, prefix(s) + "vertices " + first + " and " + second + " are the same point");
+      }
+      fail(s.line, prefix(s) + "self-intersecting: edges " + first + " and " + second +
+                       " overlap (edge i runs from vertex i to the next)");
+    }
+    world_.polygons.push_back(std::move(result));
+  }
+
+  void marking(const Statement& s) {
+    expect_args(s, 4, 5, "x1 y1 x2 y2 [width]");
+    Marking result;
+    result.a = point(s, 0, "x1", "y1", "end 1");
+    result.b = point(s, 2, "x2", "y2", "end 2");
+    if (s.args.size() == 5) result.width = positive(s, 4, "width");
+    if (result.a.x == result.b.x && result.a.y == result.b.y) {
+      fail(s.line, prefix(s) + "the two end points are the same, a line needs length");
+    }
+    world_.markings.push_back(result);
+  }
+
+  void ball(const Statement& s) {
+    if (ball_line_ != 0) duplicate(s, ball_line_);
+    expect_args(s, 2, 3, "x y [radius]");
+    Ball result;
+    result.position = point(s, 0, "x", "y", "");
+    if (s.args.size() == 3) result.radius = positive(s, 2, "radius");
+    world_.ball = result;
+    ball_line_ = s.line;
+  }
+
+  void goal(const Statement& s) {
+    expect_args(s, 2, 2, "x y");
+    world_.goals.push_back(point(s, 0, "x", "y", ""));
+  }
+
+  // --- whole-file checks ------------------------------------------------------------------------
+
+  void check_complete(int eof_line) const {
+    if (header_line_ == 0) {
+      fail(eof_line, "end of file: missing header 'ringlet-world " + std::to_string(World::kFormatVersion) + "'");
+    }
+    if (bounds_line_ == 0) fail(eof_line, "end of file: missing 'bounds <xmin> <ymin> <xmax> <ymax>' (required once)");
+    if (start_line_ == 0) fail(eof_line, "end of file: missing 'start <x> <y> <heading_deg>' (required once)");
+    if (world_.goals.empty()) fail(eof_line, "end of file: missing 'goal <x> <y>' (at least one is required)");
+  }
+
+  void check_inside_bounds() const {
+    for (const PlacedPoint& p : placed_) {
+      const bool inside =
+          p.at.x >= world_.min.x && p.at.x <= world_.max.x && p.at.y >= world_.min.y && p.at.y <= world_.max.y;
+      if (inside) continue;
+      const std::string label = p.label.empty() ? "" : p.label + " ";
+      fail(p.line, std::string(p.keyword) + ": " + label + "(" + std::string(p.x.text) + ", " +
+                       std::string(p.y.text) + ") is outside the bounds " + bounds_text_ + " (line " +
+                       std::to_string(bounds_line_) + ")");
+    }
+  }
+
+  std::string_view source_;
+  World world_;
+  int header_line_ = 0;
+  int name_line_ = 0;
+  int bounds_line_ = 0;
+  int start_line_ = 0;
+  int ball_line_ = 0;
+  std::string bounds_text_;
+  std::vector<PlacedPoint> placed_;
+};
+
+struct FileCloser {
+  void operator()(std::FILE* file) const noexcept { std::fclose(file); }
+};
+
+}  // namespace
+
+World parse_world(std::string_view text, std::string_view source) { return WorldParser(source).parse(text); }
+
+World load_world(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  const auto cannot_read = [&name](int error) {
+    return WorldError(name + ": cannot read world file: " + std::generic_category().message(error));
+  };
+  const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(name.c_str(), "rb"));
+  if (!file) throw cannot_read(errno);
+  std::string text;
+  std::array<char, 4096> buffer{};
+  std::size_t got = 0;
+  while ((got = std::fread(buffer.data(), 1, buffer.size(), file.get())) > 0) text.append(buffer.data(), got);
+  // A directory opens fine on Linux and fails only here, with EISDIR.
+  if (std::ferror(file.get()) != 0) throw cannot_read(errno);
+  return parse_world(text, name);
+}
+
+}  // namespace ringlet::sim

@@ -1,0 +1,346 @@
+// A self-contained SVG of a world and a run in it. The picture is built in a string with every
+// number printed the same fixed way, so the same inputs always give byte-identical files (they
+// end up in reports and diffs).
+#include "ringlet/sim/world_svg.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+#include "number_text.hpp"
+
+namespace ringlet::sim {
+namespace {
+
+constexpr double kWorldWidthPx = 900.0;
+constexpr double kMarginPx = 30.0;
+constexpr double kFooterPx = 100.0;
+constexpr double kGoalRadiusM = 0.3;  // the usual goal tolerance, so "reached" looks like it
+
+constexpr const char* kObstacleFill = "#4a4a4a";
+constexpr const char* kTrajectoryStroke = "#1f5fd1";
+constexpr const char* kGoalColour = "#1e8c4a";
+constexpr const char* kStartFill = "#7b3fb5";
+constexpr const char* kCollisionStroke = "#d62020";
+
+/// ~900 px across the world. A World that did not come from the parser may have empty bounds;
+/// it still gets a (meaningless but finite) picture rather than NaN coordinates.
+double pixels_per_metre(const World& world) {
+  const double width = world.max.x - world.min.x;
+  return width > 0.0 && std::isfinite(width) ? kWorldWidthPx / width : 1.0;
+}
+
+class SvgPicture {
+ public:
+  SvgPicture(const World& world, const RunOverlay& overlay)
+      : world_(world), overlay_(overlay), scale_(pixels_per_metre(world)) {}
+
+  std::string draw() {
+    const double width = kWorldWidthPx + 2.0 * kMarginPx;
+    const double height = kMarginPx + world_px_height() + kFooterPx;
+    text_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"";
+    attr("width", width);
+    attr("height", height);
+    text_ += " viewBox=\"0 0 ";
+    number(width);
+    text_ += ' ';
+    number(height);
+    text_ += "\" font-family=\"sans-serif\" font-size=\"13\">\n<title>";
+    escaped(world_.name.empty() ? std::string_view("Ringlet world") : std::string_view(world_.name));
+    text_ += "</title>\n";
+    rect("background", 0.0, 0.0, width, height, "fill=\"#f5f5f2\"");
+    ground();
+    markings();
+    obstacles();
+    ball();
+    trajectory();
+    goals();
+    start_pose();
+    collisions();
+    footer();
+    text_ += "</svg>\n";
+    return std::move(text_);
+  }
+
+ private:
+  // --- coordinates and output primitives ---------------------------------------------------------
+
+  [[nodiscard]] double world_px_width() const { return (world_.max.x - world_.min.x) * scale_; }
+  [[nodiscard]] double world_px_height() const { return (world_.max.y - world_.min.y) * scale_; }
+  [[nodiscard]] double px(double x) const { return kMarginPx + (x - world_.min.x) * scale_; }
+  // SVG's y grows downwards; the world's grows upwards.
+  [[nodiscard]] double py(double y) const { return kMarginPx + (world_.max.y - y) * scale_; }
+
+  void number(double value) { detail::append_fixed(text_, value, 3); }
+
+  void attr(std::string_view name, double value) {
+    text_ += ' ';
+    text_ += name;
+    text_ += "=\"";
+    number(value);
+    text_ += '"';
+  }
+
+  void point(double x_px, double y_px) {
+    number(x_px);
+    text_ += ',';
+    number(y_px);
+  }
+
+  void escaped(std::string_view raw) {
+    for (const char c : raw) {
+      switch (c) {
+        case '&': text_ += "&amp;"; break;
+        case '<': text_ += "&lt;"; break;
+        case '>': text_ += "&gt;"; break;
+        case '"': text_ += "&quot;"; break;
+        case '\'': text_ += "&apos;"; break;
+        default: text_ += c;
+      }
+    }
+  }
+
+  void rect(std::string_view cls, double x, double y, double w, double h, std::string_view style) {
+    text_ += "<rect class=\"";
+    text_ += cls;
+    text_ += '"';
+    attr("x", x);
+    attr("y", y);
+    attr("width", w);
+    attr("height", h);
+    text_ += ' ';
+    text_ += style;
+    text_ += "/>\n";
+  }
+
+  void circle(std::string_view cls, double cx, double cy, double r, std::string_view style) {
+    text_ += "<circle class=\"";
+    text_ += cls;
+    text_ += '"';
+    attr("cx", cx);
+    attr("cy", cy);
+    attr("r", r);
+    text_ += ' ';
+    text_ += style;
+    text_ += "/>\n";
+  }
+
+  void line(std::string_view cls, double x1, double y1, double x2, double y2, std::string_view style) {
+    text_ += "<line class=\"";
+    text_ += cls;
+    text_ += '"';
+    attr("x1", x1);
+    attr("y1", y1);
+    attr("x2", x2);
+    attr("y2", y2);
+    text_ += ' ';
+    text_ += style;
+    text_ += "/>\n";
+  }
+
+  void label(double x, double y, std::string_view anchor, std::string_view extra, std::string_view content) {
+    text_ += "<text";
+    attr("x", x);
+    attr("y", y);
+    text_ += " text-anchor=\"";
+    text_ += anchor;
+    text_ += '"';
+    if (!extra.empty()) {
+      text_ += ' ';
+      text_ += extra;
+    }
+    text_ += '>';
+    escaped(content);
+    text_ += "</text>\n";
+  }
+
+  /// A triangle with its tip `length` metres ahead of `pose` and a base `width` metres across.
+  void arrow(std::string_view cls, const hal::Pose2& pose, double length, double width, std::string_view style) {
+    const double ahead_x = std::sin(pose.theta);
+    const double ahead_y = std::cos(pose.theta);
+    // Right of the heading in the world frame (the heading turns clockwise towards it).
+    const double right_x = ahead_y;
+    const double right_y = -ahead_x;
+    const double back = -0.4 * length;
+    text_ += "<polygon class=\"";
+    text_ += cls;
+    text_ += "\" points=\"";
+    point(px(pose.x + length * 0.6 * ahead_x), py(pose.y + length * 0.6 * ahead_y));
+    text_ += ' ';
+    point(px(pose.x + back * ahead_x + 0.5 * width * right_x), py(pose.y + back * ahead_y + 0.5 * width * right_y));
+    text_ += ' ';
+    point(px(pose.x + back * ahead_x - 0.5 * width * right_x), py(pose.y + back * ahead_y - 0.5 * width * right_y));
+    text_ += "\" ";
+    text_ += style;
+    text_ += "/>\n";
+  }
+
+  void cross_mark(std::string_view cls, double x_px, double y_px, double half) {
+    text_ += "<path class=\"";
+    text_ += cls;
+    text_ += "\" d=\"M";
+    point(x_px - half, y_px - half);
+    text_ += " L";
+    point(x_px + half, y_px + half);
+    text_ += " M";
+    point(x_px - half, y_px + half);
+    text_ += " L";
+    point(x_px + half, y_px - half);
+    text_ += "\" stroke=\"";
+    text_ += kCollisionStroke;
+    text_ += "\" stroke-width=\"2.5\" stroke-linecap=\"round\" fill=\"none\"/>\n";
+  }
+
+  // --- the layers, bottom to top -------------------------------------------------------------------
+
+  void ground() {
+    // A field with painted lines reads as grass; a plain world stays white.
+    const std::string_view fill = world_.markings.empty() ? "fill=\"#ffffff\"" : "fill=\"#6aa84f\"";
+    rect("ground", px(world_.min.x), py(world_.max.y), world_px_width(), world_px_height(), fill);
+    rect("walls", px(world_.min.x), py(world_.max.y), world_px_width(), world_px_height(),
+         "fill=\"none\" stroke=\"#8a8a8a\" stroke-width=\"6\"");
+  }
+
+  void markings() {
+    for (const Marking& m : world_.markings) {
+      std::string style = "stroke=\"#ffffff\" stroke-linecap=\"square\" stroke-width=\"";
+      detail::append_fixed(style, std::max(1.0, m.width * scale_), 3);
+      style += '"';
+      line("marking", px(m.a.x), py(m.a.y), px(m.b.x), py(m.b.y), style);
+    }
+  }
+
+  void obstacles() {
+    const std::string fill = std::string("fill=\"") + kObstacleFill + '"';
+    for (const Circle& c : world_.circles) circle("obstacle", px(c.centre.x), py(c.centre.y), c.radius * scale_, fill);
+    for (const Polygon& polygon : world_.polygons) {
+      text_ += "<polygon class=\"obstacle\" points=\"";
+      for (std::size_t i = 0; i < polygon.vertices.size(); ++i) {
+        if (i > 0) text_ += ' ';
+        point(px(polygon.vertices[i].x), py(polygon.vertices[i].y));
+      }
+      text_ += "\" ";
+      text_ += fill;
+      text_ += "/>\n";
+    }
+  }
+
+  void ball() {
+    if (!world_.ball) return;
+    // At true scale a 5 cm ball is a speck; keep it visible.
+    const double r = std::max(4.0, world_.ball->radius * scale_);
+    circle("ball", px(world_.ball->position.x), py(world_.ball->position.y), r,
+           "fill=\"#ff8c1a\" stroke=\"#8a4500\" stroke-width=\"1\"");
+  }
+
+  void trajectory() {
+    if (overlay_.trajectory.empty()) return;
+    text_ += "<polyline class=\"trajectory\" points=\"";
+    for (std::size_t i = 0; i < overlay_.trajectory.size(); ++i) {
+      if (i > 0) text_ += ' ';
+      point(px(overlay_.trajectory[i].x), py(overlay_.trajectory[i].y));
+    }
+    text_ += "\" fill=\"none\" stroke=\"";
+    text_ += kTrajectoryStroke;
+    text_ += "\" stroke-width=\"2\" stroke-linejoin=\"round\" stroke-linecap=\"round\"/>\n";
+  }
+
+  void goals() {
+    const double r = std::max(8.0, kGoalRadiusM * scale_);
+    for (std::size_t i = 0; i < world_.goals.size(); ++i) {
+      const bool reached = i < overlay_.goals_reached;
+      const double cx = px(world_.goals[i].x);
+      const double cy = py(world_.goals[i].y);
+      std::string style = reached ? std::string("fill=\"") + kGoalColour + '"' : std::string("fill=\"#ffffff\"");
+      style += std::string(" stroke=\"") + kGoalColour + "\" stroke-width=\"2\"";
+      circle(reached ? "goal reached" : "goal", cx, cy, r, style);
+      label(cx, cy + 4.5, "middle", reached ? "fill=\"#ffffff\" font-weight=\"bold\"" : "font-weight=\"bold\"",
+            std::to_string(i + 1));
+    }
+  }
+
+  void start_pose() {
+    arrow("start", world_.start, 0.8, 0.5,
+          std::string("fill=\"") + kStartFill + "\" stroke=\"#ffffff\" stroke-width=\"1\"");
+  }
+
+  void collisions() {
+    for (const Vec2& c : overlay_.collisions) cross_mark("collision", px(c.x), py(c.y), 6.0);
+  }
+
+  void footer() {
+    const double top = kMarginPx + world_px_height();
+    const double left = kMarginPx;
+    label(left, top + 26.0, "start", "class=\"caption\" font-size=\"15\"", overlay_.caption);
+
+    // Scale bar: 1 m with end ticks.
+    const double bar_y = top + 52.0;
+    const std::string_view bar_style = "stroke=\"#222222\" stroke-width=\"2\"";
+    line("scale-bar", left, bar_y, left + scale_, bar_y, bar_style);
+    line("scale-bar", left, bar_y - 5.0, left, bar_y + 5.0, bar_style);
+    line("scale-bar", left + scale_, bar_y - 5.0, left + scale_, bar_y + 5.0, bar_style);
+    label(left + scale_ + 8.0, bar_y + 4.5, "start", "", "1 m");
+
+    // Legend: one row of swatches with their meaning.
+    const double y = top + 82.0;
+    double x = left + 8.0;
+    const double step = 140.0;
+    line("legend", x - 8.0, y, x + 8.0, y,
+         std::string("stroke=\"") + kTrajectoryStroke + "\" stroke-width=\"2\"");
+    label(x + 14.0, y + 4.5, "start", "", "trajectory");
+    x += step;
+    text_ += "<polygon class=\"legend\" points=\"";
+    point(x, y - 7.0);
+    text_ += ' ';
+    point(x + 6.0, y + 6.0);
+    text_ += ' ';
+    point(x - 6.0, y + 6.0);
+    text_ += "\" fill=\"";
+    text_ += kStartFill;
+    text_ += "\"/>\n";
+    label(x + 14.0, y + 4.5, "start", "", "start pose");
+    x += step;
+    circle("legend", x, y, 7.0, std::string("fill=\"") + kGoalColour + '"');
+    label(x + 14.0, y + 4.5, "start", "", "goal reached");
+    x += step;
+    circle("legend", x, y, 7.0, std::string("fill=\"#ffffff\" stroke=\"") + kGoalColour + "\" stroke-width=\"2\"");
+    label(x + 14.0, y + 4.5, "start", "", "goal pending");
+    x += step;
+    rect("legend", x - 7.0, y - 7.0, 14.0, 14.0, std::string("fill=\"") + kObstacleFill + '"');
+    label(x + 14.0, y + 4.5, "start", "", "obstacle");
+    x += step;
+    cross_mark("legend", x, y, 6.0);
+    label(x + 14.0, y + 4.5, "start", "", "collision");
+  }
+
+  const World& world_;
+  const RunOverlay& overlay_;
+  double scale_;  // pixels per metre
+  std::string text_;
+};
+
+}  // namespace
+
+void write_world_svg(std::ostream& out, const World& world, const RunOverlay& overlay) {
+  out << SvgPicture(world, overlay).draw();
+}
+
+void write_world_svg(const std::filesystem::path& path, const World& world, const RunOverlay& overlay) {
+  const std::string picture = SvgPicture(world, overlay).draw();
+  const auto fail = [&path](int error) {
+    const std::string reason = error != 0 ? std::generic_category().message(error) : "I/O error";
+    throw std::runtime_error(path.string() + ": cannot write SVG: " + reason);
+  };
+  errno = 0;
+  std::ofstream file(path, std::ios::binary | std::ios::trunc);
+  if (!file) fail(errno);
+  file.write(picture.data(), static_cast<std::streamsize>(picture.size()));
+  file.flush();
+  if (!file) fail(errno);
+}
+
+}  // namespace ringlet::sim

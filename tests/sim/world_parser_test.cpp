@@ -1,0 +1,201 @@
+// The world file format: a good file in full, and every way a file can be wrong, each with the
+// exact "<source>:<line>: " position and the phrase that tells the author what to fix.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <ostream>
+#include <string>
+
+#include "ringlet/sim/world.hpp"
+
+namespace ringlet::sim {
+namespace {
+
+const std::string kTestWorlds = RINGLET_TEST_WORLDS_DIR;
+
+TEST(SimWorldParser, ReadsEveryStatement) {
+  const World world = load_world(kTestWorlds + "/small.world");
+  EXPECT_EQ(world.name, "Small # yard");
+  EXPECT_EQ(world.min.x, -5.0);
+  EXPECT_EQ(world.min.y, -2.5);
+  EXPECT_EQ(world.max.x, 5.0);
+  EXPECT_EQ(world.max.y, 7.5);
+  EXPECT_EQ(world.start.x, 0.0);
+  EXPECT_EQ(world.start.y, 0.0);
+  EXPECT_DOUBLE_EQ(world.start.theta, std::numbers::pi / 2.0);
+
+  ASSERT_EQ(world.circles.size(), 2U);
+  EXPECT_EQ(world.circles[1].centre.x, -3.0);
+  EXPECT_EQ(world.circles[1].radius, 1.0);
+  ASSERT_EQ(world.polygons.size(), 2U);
+  EXPECT_EQ(world.polygons[0].vertices.size(), 3U);
+  EXPECT_EQ(world.polygons[1].vertices.size(), 4U);
+  EXPECT_EQ(world.polygons[0].vertices[2].y, 6.5);
+
+  ASSERT_EQ(world.markings.size(), 2U);
+  EXPECT_EQ(world.markings[0].width, 0.05);  // the default
+  EXPECT_EQ(world.markings[1].width, 0.1);
+
+  ASSERT_TRUE(world.ball.has_value());
+  EXPECT_EQ(world.ball->position.x, 1.5);
+  EXPECT_EQ(world.ball->radius, 0.05);  // the default
+
+  ASSERT_EQ(world.goals.size(), 3U);
+  EXPECT_EQ(world.goals[0].x, 4.0);
+  EXPECT_EQ(world.goals[2].y, -1.5);
+}
+
+TEST(SimWorldParser, MinimalWorldHasNoOptionalParts) {
+  const World world = parse_world("ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0\ngoal 5 5", "min.world");
+  EXPECT_TRUE(world.name.empty());
+  EXPECT_TRUE(world.circles.empty());
+  EXPECT_TRUE(world.polygons.empty());
+  EXPECT_TRUE(world.markings.empty());
+  EXPECT_FALSE(world.ball.has_value());
+  EXPECT_EQ(world.goals.size(), 1U);
+}
+
+TEST(SimWorldParser, AcceptsWindowsLineEndingsAndTabs) {
+  const World world = parse_world("ringlet-world 1\r\nbounds\t0 0 10 10\r\nstart 1 1 -90\r\ngoal 5 5\r\n", "crlf.world");
+  EXPECT_EQ(world.max.y, 10.0);
+  EXPECT_DOUBLE_EQ(world.start.theta, -std::numbers::pi / 2.0);
+}
+
+TEST(SimWorldParser, WrapsTheStartHeading) {
+  const World world = parse_world("ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 270\ngoal 5 5\n", "w");
+  EXPECT_DOUBLE_EQ(world.start.theta, -std::numbers::pi / 2.0);
+}
+
+TEST(SimWorldParser, MissingFileNamesThePathAndTheReason) {
+  const std::string path = kTestWorlds + "/no-such.world";
+  try {
+    (void)load_world(path);
+    FAIL() << "no exception";
+  } catch (const WorldError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": cannot read world file: No such file or directory");
+  }
+}
+
+TEST(SimWorldParser, DirectoryIsNotAWorldFile) {
+  try {
+    (void)load_world(kTestWorlds);
+    FAIL() << "no exception";
+  } catch (const WorldError& e) {
+    EXPECT_EQ(std::string(e.what()), kTestWorlds + ": cannot read world file: Is a directory");
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+
+struct BadWorld {
+  const char* name;
+  std::string text;
+  std::string position;  // the exact "<source>:<line>: " the message must start with
+  std::string phrase;    // and a phrase it must contain
+};
+
+// Lines 1-4 of a valid world; most cases append their bad line as line 5.
+const std::string kHead = "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0\ngoal 5 5\n";
+
+const BadWorld kBadWorlds[] = {
+    {"unknown_keyword", kHead + "cirle 1 2 3\n", "t.world:5: ", "unknown keyword 'cirle'"},
+    {"quoted_keyword", kHead + "\"circle\" 1 2 3\n", "t.world:5: ", "unknown keyword \"circle\""},
+    {"too_few_arguments", kHead + "circle 1 2\n", "t.world:5: ", "circle: expected 3 arguments (x y radius), got 2"},
+    {"too_many_arguments", kHead + "goal 1 2 3\n", "t.world:5: ", "goal: expected 2 arguments (x y), got 3"},
+    {"optional_argument_count", kHead + "marking 1 1 2\n", "t.world:5: ",
+     "marking: expected 4 or 5 arguments (x1 y1 x2 y2 [width]), got 3"},
+    {"trailing_junk", kHead + "circle 1 2 1.5m\n", "t.world:5: ", "circle: radius is not a number: '1.5m'"},
+    {"word_for_number", kHead + "goal five 5\n", "t.world:5: ", "goal: x is not a number: 'five'"},
+    {"quoted_number", kHead + "goal \"5\" 5\n", "t.world:5: ", "goal: x is not a number: '\"5\"'"},
+    {"double_sign", kHead + "goal +-5 5\n", "t.world:5: ", "goal: x is not a number: '+-5'"},
+    {"infinite", kHead + "circle 1 2 inf\n", "t.world:5: ", "circle: radius must be finite, got 'inf'"},
+    {"not_a_number", kHead + "ball nan 2\n", "t.world:5: ", "ball: x must be finite, got 'nan'"},
+    {"out_of_range", kHead + "circle 1 1e999 1\n", "t.world:5: ", "circle: y is out of range: '1e999'"},
+    {"negative_radius", kHead + "circle 5 7 -1\n", "t.world:5: ", "circle: radius must be > 0, got -1"},
+    {"zero_radius", kHead + "circle 5 7 0\n", "t.world:5: ", "circle: radius must be > 0, got 0"},
+    {"ball_radius", kHead + "ball 5 7 -0.1\n", "t.world:5: ", "ball: radius must be > 0, got -0.1"},
+    {"marking_width", kHead + "marking 1 1 2 2 0\n", "t.world:5: ", "marking: width must be > 0, got 0"},
+    {"marking_no_length", kHead + "marking 1 1 1 1\n", "t.world:5: ", "marking: the two end points are the same"},
+    {"bounds_x_reversed", "ringlet-world 1\nbounds 5 0 3 10\nstart 1 1 0\ngoal 4 4\n", "t.world:2: ",
+     "bounds: xmin (5) must be < xmax (3)"},
+    {"bounds_y_empty", "ringlet-world 1\nbounds 0 2 10 2\nstart 1 1 0\ngoal 4 4\n", "t.world:2: ",
+     "bounds: ymin (2) must be < ymax (2)"},
+    {"bounds_arguments", "ringlet-world 1\nbounds 0 0 10\n", "t.world:2: ",
+     "bounds: expected 4 arguments (xmin ymin xmax ymax), got 3"},
+    {"duplicate_bounds", kHead + "bounds 0 0 10 10\n", "t.world:5: ", "bounds: given twice (first on line 2)"},
+    {"duplicate_start", kHead + "start 2 2 0\n", "t.world:5: ", "start: given twice (first on line 3)"},
+    {"duplicate_ball", kHead + "ball 1 1\n# comment\nball 2 2\n", "t.world:7: ", "ball: given twice (first on line 5)"},
+    {"duplicate_name", kHead + "name \"a\"\nname \"b\"\n", "t.world:6: ", "name: given twice (first on line 5)"},
+    {"duplicate_header", kHead + "ringlet-world 1\n", "t.world:5: ", "ringlet-world: given twice (first on line 1)"},
+    {"name_not_quoted", kHead + "name Courtyard\n", "t.world:5: ", "name: expected one quoted string"},
+    {"name_two_strings", kHead + "name \"a\" \"b\"\n", "t.world:5: ", "name: expected one quoted string"},
+    {"unterminated_string", kHead + "name \"Court\n", "t.world:5: ", "unterminated quoted string"},
+    {"text_after_string", kHead + "name \"Court\"yard\n", "t.world:5: ", "unexpected text right after a quoted string"},
+    {"missing_header", "bounds 0 0 10 10\nstart 1 1 0\ngoal 5 5\n", "t.world:1: ",
+     "missing header: the first line must be 'ringlet-world 1', got 'bounds'"},
+    {"missing_header_after_comments", "# a world\n\n   \nbounds 0 0 10 10\n", "t.world:4: ", "missing header"},
+    {"empty_file", "", "t.world:1: ", "end of file: missing header 'ringlet-world 1'"},
+    {"only_comments", "# nothing\n# here\n", "t.world:2: ", "end of file: missing header"},
+    {"unsupported_version", "ringlet-world 2\nbounds 0 0 10 10\n", "t.world:1: ",
+     "ringlet-world: unsupported version 2 (this build reads version 1)"},
+    {"fractional_version", "ringlet-world 1.0\n", "t.world:1: ", "ringlet-world: version must be an integer, got '1.0'"},
+    {"missing_version", "ringlet-world\n", "t.world:1: ", "ringlet-world: expected 1 argument (version), got 0"},
+    {"missing_bounds", "ringlet-world 1\nstart 1 1 0\ngoal 2 2\n", "t.world:3: ", "end of file: missing 'bounds"},
+    {"missing_start", "ringlet-world 1\nbounds 0 0 10 10\ngoal 2 2", "t.world:3: ", "end of file: missing 'start"},
+    {"missing_goal", "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0\n# the end\n", "t.world:4: ",
+     "end of file: missing 'goal <x> <y>' (at least one is required)"},
+    {"goal_outside", "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0\ngoal 11 5\n", "t.world:4: ",
+     "goal: (11, 5) is outside the bounds 0 0 10 10 (line 2)"},
+    {"start_outside_before_bounds", "ringlet-world 1\nstart -1 1 0\nbounds 0 0 10 10\ngoal 5 5\n", "t.world:2: ",
+     "start: (-1, 1) is outside the bounds"},
+    {"circle_outside", kHead + "circle 12 5 1\n", "t.world:5: ", "circle: centre (12, 5) is outside the bounds"},
+    {"polygon_vertex_outside", kHead + "polygon 1 1 2 1 2 -3\n", "t.world:5: ",
+     "polygon: vertex 3 (2, -3) is outside the bounds"},
+    {"ball_outside", kHead + "ball 5 10.5\n", "t.world:5: ", "ball: (5, 10.5) is outside the bounds"},
+    {"marking_outside", kHead + "marking 1 1 12 1\n", "t.world:5: ", "marking: end 2 (12, 1) is outside the bounds"},
+    {"bow_tie_polygon", kHead + "polygon 1 1 3 3 3 1 1 3\n", "t.world:5: ", "polygon: self-intersecting: edges 1 and 3"},
+    {"collinear_polygon", kHead + "polygon 1 1 2 2 3 3\n", "t.world:5: ", "polygon: self-intersecting"},
+    {"polygon_touching_itself", kHead + "polygon 1 1 5 1 5 5 3 1 1 5\n", "t.world:5: ", "polygon: self-intersecting"},
+    {"polygon_repeated_vertex", kHead + "polygon 1 1 2 2 2 2 1 3\n", "t.world:5: ",
+     "polygon: vertices 2 and 3 are the same point"},
+    {"polygon_two_vertices", kHead + "polygon 1 1 2 2\n", "t.world:5: ", "polygon: needs at least 3 vertices, got 2"},
+    {"polygon_odd_coordinates", kHead + "polygon 1 1 2 2 3\n", "t.world:5: ",
+     "polygon: expected x y pairs, got an odd number of coordinates (5)"},
+    {"polygon_bad_number", kHead + "polygon 1 1 2 2 3 x\n", "t.world:5: ", "polygon: y3 is not a number: 'x'"},
+    {"start_heading", "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 north\ngoal 5 5\n", "t.world:3: ",
+     "start: heading_deg is not a number: 'north'"},
+};
+
+// Test names and failure messages show the case's name, not the struct's bytes.
+void PrintTo(const BadWorld& bad, std::ostream* out) { *out << bad.name; }
+
+class SimWorldParserRejects : public testing::TestWithParam<BadWorld> {};
+
+TEST_P(SimWorldParserRejects, WithPositionAndReason) {
+  const BadWorld& bad = GetParam();
+  try {
+    // Nothing half-loaded: the only way out is a complete World or this exception.
+    (void)parse_world(bad.text, "t.world");
+    FAIL() << "accepted:\n" << bad.text;
+  } catch (const WorldError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.substr(0, bad.position.size()), bad.position) << message;
+    EXPECT_NE(message.find(bad.phrase), std::string::npos) << message;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(SimWorldParser, SimWorldParserRejects, testing::ValuesIn(kBadWorlds),
+                         [](const testing::TestParamInfo<BadWorld>& param) { return std::string(param.param.name); });
+
+TEST(SimWorldParser, MessageIsExactlySourceLineMessage) {
+  try {
+    (void)parse_world(kHead + "\n\ncircle 5 7 -1\n", "courtyard.world");
+    FAIL() << "no exception";
+  } catch (const WorldError& e) {
+    EXPECT_STREQ(e.what(), "courtyard.world:7: circle: radius must be > 0, got -1");
+  }
+}
+
+}  // namespace
+}  // namespace ringlet::sim

@@ -1,0 +1,147 @@
+// The SVG picture: what is drawn (goals, trajectory, collisions), that y points up, that output
+// is deterministic, and that a file that cannot be written is reported.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "ringlet/sim/world_svg.hpp"
+#include "sim_test_support.hpp"
+
+namespace ringlet::sim {
+namespace {
+
+std::size_t count(const std::string& text, const std::string& needle) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + needle.size())) ++n;
+  return n;
+}
+
+/// The value of the first `name="..."` attribute after `from`.
+std::string attribute(const std::string& text, const std::string& name, std::size_t from = 0) {
+  const std::size_t start = text.find(" " + name + "=\"", from);
+  if (start == std::string::npos) return {};
+  const std::size_t value = start + name.size() + 3;
+  return text.substr(value, text.find('"', value) - value);
+}
+
+World picture_world() {
+  World world = test::box_world(20.0, 10.0, {1.0, 1.0, 0.0});
+  world.name = "Yard <A & B>";
+  world.goals = {{5.0, 5.0}, {15.0, 8.0}, {15.0, 2.0}, {5.0, 2.0}};
+  world.circles.push_back({{10.0, 5.0}, 1.0});
+  world.polygons.push_back({{{2.0, 7.0}, {4.0, 7.0}, {3.0, 9.0}}});
+  world.markings.push_back({{1.0, 5.0}, {19.0, 5.0}, 0.05});
+  world.ball = Ball{{12.0, 3.0}, 0.05};
+  return world;
+}
+
+std::vector<hal::Pose2> spiral(std::size_t n) {
+  std::vector<hal::Pose2> poses;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) * 0.1;
+    poses.push_back({10.0 + 0.1 * t * std::sin(t), 5.0 + 0.1 * t * std::cos(t), t});
+  }
+  return poses;
+}
+
+std::string render(const World& world, const RunOverlay& overlay) {
+  std::ostringstream out;
+  write_world_svg(out, world, overlay);
+  return out.str();
+}
+
+TEST(SimSvg, DrawsGoalsReachedAndPending) {
+  const World world = picture_world();
+  RunOverlay overlay;
+  overlay.goals_reached = 3;
+  const std::string svg = render(world, overlay);
+  EXPECT_EQ(count(svg, "<circle class=\"goal reached\""), 3U);
+  EXPECT_EQ(count(svg, "<circle class=\"goal\""), 1U);
+  EXPECT_NE(svg.find(">4</text>"), std::string::npos);  // goals are numbered from 1
+  EXPECT_EQ(svg.find(">5</text>"), std::string::npos);
+}
+
+TEST(SimSvg, TrajectoryIsOnePolylineWithEveryPoint) {
+  const World world = picture_world();
+  const std::vector<hal::Pose2> poses = spiral(57);
+  RunOverlay overlay;
+  overlay.trajectory = poses;
+  const std::string svg = render(world, overlay);
+  ASSERT_EQ(count(svg, "<polyline class=\"trajectory\""), 1U);
+  const std::string points = attribute(svg, "points", svg.find("<polyline"));
+  EXPECT_EQ(count(points, ",") , 57U);
+  EXPECT_EQ(count(points, " "), 56U);
+
+  overlay.trajectory = {};
+  EXPECT_EQ(count(render(world, overlay), "<polyline"), 0U);
+}
+
+TEST(SimSvg, ScaleIsAbout900PixelsAndYPointsUp) {
+  const World world = picture_world();
+  const std::string svg = render(world, RunOverlay{});
+  // The 20 m wide world is 900 px wide: 45 px per metre, goal 1 at (5, 5) and goal 2 at (15, 8).
+  const std::size_t first = svg.find("<circle class=\"goal\"");
+  const std::size_t second = svg.find("<circle class=\"goal\"", first + 1);
+  const double x1 = std::stod(attribute(svg, "cx", first));
+  const double x2 = std::stod(attribute(svg, "cx", second));
+  const double y1 = std::stod(attribute(svg, "cy", first));
+  const double y2 = std::stod(attribute(svg, "cy", second));
+  EXPECT_DOUBLE_EQ(x2 - x1, 450.0);
+  EXPECT_DOUBLE_EQ(y1 - y2, 135.0);  // the higher goal is nearer the top of the picture
+}
+
+TEST(SimSvg, DrawsEveryKindOfThing) {
+  const World world = picture_world();
+  const std::vector<Vec2> hits = {{10.0, 3.8}, {3.0, 6.6}, {18.0, 9.0}};
+  RunOverlay overlay;
+  overlay.collisions = hits;
+  overlay.caption = "mission: 3/4 goals & 3 collisions <bad>";
+  const std::string svg = render(world, overlay);
+  EXPECT_TRUE(svg.starts_with("<?xml"));
+  EXPECT_NE(svg.find("<svg xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);
+  EXPECT_TRUE(svg.ends_with("</svg>\n"));
+  EXPECT_EQ(count(svg, "class=\"collision\""), 3U);
+  EXPECT_EQ(count(svg, "class=\"obstacle\""), 2U);
+  EXPECT_EQ(count(svg, "class=\"marking\""), 1U);
+  EXPECT_EQ(count(svg, "class=\"ball\""), 1U);
+  EXPECT_EQ(count(svg, "class=\"start\""), 1U);
+  EXPECT_EQ(count(svg, "class=\"scale-bar\""), 3U);
+  EXPECT_NE(svg.find(">1 m</text>"), std::string::npos);
+  EXPECT_NE(svg.find("mission: 3/4 goals &amp; 3 collisions &lt;bad&gt;"), std::string::npos);
+  EXPECT_NE(svg.find("<title>Yard &lt;A &amp; B&gt;</title>"), std::string::npos);
+  EXPECT_NE(svg.find("fill=\"#6aa84f\""), std::string::npos);  // grass under the markings
+}
+
+TEST(SimSvg, IsDeterministicAndTheFileMatchesTheStream) {
+  const World world = picture_world();
+  const std::vector<hal::Pose2> poses = spiral(200);
+  const std::vector<Vec2> hits = {{10.0, 3.8}};
+  RunOverlay overlay{poses, hits, 2, "caption"};
+  const std::string first = render(world, overlay);
+  EXPECT_EQ(first, render(world, overlay));
+
+  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / "ringlet_sim_svg_test.svg";
+  write_world_svg(path, world, overlay);
+  std::ifstream in(path, std::ios::binary);
+  const std::string from_file{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_EQ(from_file, first);
+  std::filesystem::remove(path);
+}
+
+TEST(SimSvg, UnwritableFileNamesThePath) {
+  const std::filesystem::path path = "/nonexistent-ringlet-dir/picture.svg";
+  try {
+    write_world_svg(path, picture_world(), RunOverlay{});
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), path.string() + ": cannot write SVG: No such file or directory");
+  }
+}
+
+}  // namespace
+}  // namespace ringlet::sim
