@@ -1,0 +1,93 @@
+// The configuration file: every bad value is refused with "file:line:col: key: message" and no
+// configuration comes back; the shipped one and an 83 Hz variant load.
+#include <gtest/gtest.h>
+
+#include "firmware_test_support.hpp"
+
+namespace ringlet::firmware {
+namespace {
+
+using test::parse_as_shipped;
+using test::shipped_config_text;
+using test::with_line;
+
+std::string error_of(const std::string& text) {
+  try {
+    (void)parse_as_shipped(text);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(FirmwareConfig, ShippedConfigLoads) {
+  const auto cfg = load_config(test::kShippedConfig);
+  EXPECT_EQ(cfg.backend, "sim");
+  EXPECT_EQ(cfg.executive.period, hal::Nanos{10'000'000});
+  ASSERT_EQ(cfg.tasks.size(), 4U);
+  EXPECT_EQ(cfg.tasks[0].name, "sense");
+  EXPECT_TRUE(std::filesystem::exists(cfg.world)) << cfg.world;
+}
+
+TEST(FirmwareConfig, EightyThreeHertzByConfiguration) {
+  const auto cfg = parse_as_shipped(with_line(shipped_config_text(), "period_us", "period_us = 12000"));
+  EXPECT_EQ(cfg.executive.period, hal::Nanos{12'000'000});
+  EXPECT_EQ(cfg.sim.period, hal::Nanos{12'000'000}) << "the simulator steps by the executive's period";
+}
+
+TEST(FirmwareConfig, MissingFileNamesIt) {
+  try {
+    (void)load_config("/nonexistent/ringlet.toml");
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), "/nonexistent/ringlet.toml: cannot read configuration file");
+  }
+}
+
+struct BadCase {
+  const char* key;
+  const char* line;
+  const char* expected;  // a substring of the message, after "<file>:"
+};
+
+class BadConfig : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadConfig, IsRefusedWithFileLineAndKey) {
+  const auto& c = GetParam();
+  const std::string message = error_of(with_line(shipped_config_text(), c.key, c.line));
+  EXPECT_EQ(message.rfind(test::kShippedConfig.string() + ":", 0), 0U) << message;
+  EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadConfig,
+    ::testing::Values(
+        BadCase{"backend", "backend = \"ros\"", "robot.backend: must be one of \"sim\", \"can\", got \"ros\""},
+        BadCase{"seed", "seed = -3", "sim.seed: must be a non-negative integer"},
+        BadCase{"max_speed", "max_speed = \"fast\"", "sim.max_speed: must be a number"},
+        BadCase{"laser_beams", "laser_beams = 5000", "sim.laser_beams: must be between 1 and 721"},
+        BadCase{"period_us", "period_us = 10", "executive.period_us: must be between 1000 and 1000000"},
+        BadCase{"clock", "clock = \"sundial\"", "executive.clock: must be one of"},
+        BadCase{"cpu =", "cpu = 1.5", "executive.cpu: must be an integer"},
+        BadCase{"gain", "gian = 2.0", "follower.gian: unknown key in [follower]"},
+        BadCase{"[telemetry]", "[telemetri]", "telemetri: unknown key"},
+        BadCase{"timeout_s", "timeout_s = ", ":"},  // TOML syntax error, still file:line:col
+        BadCase{"  { name = \"sense\"", "  { name = \"sense\", every = 3, phase = 3, budget_us = 200 },",
+                "executive.tasks[0].phase: must be between 0 and 2, got 3"},
+        BadCase{"  { name = \"sense\"", "  { name = \"sense\", rate_hz = 30, budget_us = 200 },",
+                "rate 30 Hz does not divide the base rate 100 Hz"},
+        BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 20000 },",
+                "is larger than the period"},
+        BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 9900 },", "is overloaded: budgets of sense, follow, actuate, telemetry"},
+        BadCase{"  { name = \"sense\"", "  { name = \"sense\" },", "executive.tasks[0].budget_us: every task needs a budget"},
+        BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 200, policy = \"panic\" },",
+                "policy: must be one of \"warn\", \"skip\", \"degrade\", \"failsafe\""},
+        BadCase{"min_speed", "min_speed = 5.0", "follower.min_speed: must not exceed max_speed"}));
+
+TEST(FirmwareConfig, SimBackendNeedsAWorld) {
+  const std::string message = error_of(with_line(shipped_config_text(), "world", "# no world"));
+  EXPECT_NE(message.find("sim.world: the simulated robot needs a world file"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace ringlet::firmware

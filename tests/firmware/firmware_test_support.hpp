@@ -1,0 +1,46 @@
+#pragma once
+// Shared by the firmware tests: the shipped configuration with a few keys changed, as text, so
+// that every test builds the stack exactly the way the binary does.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "ringlet/firmware/config.hpp"
+
+namespace ringlet::firmware::test {
+
+inline const std::filesystem::path kShippedConfig = RINGLET_SHIPPED_CONFIG;
+
+inline std::string shipped_config_text() {
+  std::ifstream in(kShippedConfig);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The shipped configuration with the first line that starts with `key` replaced by `line`
+/// (or `line` appended to the text when no line starts with `key`).
+inline std::string with_line(std::string text, const std::string& key, const std::string& line) {
+  std::istringstream in(text);
+  std::ostringstream out;
+  std::string l;
+  bool replaced = false;
+  while (std::getline(in, l)) {
+    if (!replaced && l.rfind(key, 0) == 0) {
+      out << line << '\n';
+      replaced = true;
+    } else {
+      out << l << '\n';
+    }
+  }
+  if (!replaced) out << line << '\n';
+  return out.str();
+}
+
+/// Parses config text as if it were the shipped file (relative paths resolve the same way).
+inline FirmwareConfig parse_as_shipped(const std::string& text) {
+  return parse_config(text, kShippedConfig.string(), kShippedConfig.parent_path());
+}
+
+}  // namespace ringlet::firmware::test
