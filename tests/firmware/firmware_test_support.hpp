@@ -12,6 +12,12 @@ namespace ringlet::firmware::test {
 
 inline const std::filesystem::path kShippedConfig = RINGLET_SHIPPED_CONFIG;
 
+/// How much slower than the host's native speed this build runs (qemu-aarch64, sanitizers): CPU
+/// time measured here says nothing about the robot then, and budgets are scaled by it or not
+/// judged. 1 for native builds (set by tests/firmware/CMakeLists.txt).
+inline constexpr double kCpuSlowdown = RINGLET_CPU_SLOWDOWN;
+inline constexpr bool kNativeSpeed = kCpuSlowdown == 1.0;
+
 inline std::string shipped_config_text() {
   std::ifstream in(kShippedConfig);
   std::ostringstream s;
@@ -36,6 +42,15 @@ inline std::string with_line(std::string text, const std::string& key, const std
   }
   if (!replaced) out << line << '\n';
   return out.str();
+}
+
+/// The text with every task's overrun policy set to "warn": for tests of what the robot does,
+/// which must not depend on how fast the build under test happens to run.
+inline std::string warn_only(std::string text) {
+  for (const char* p : {"\"failsafe\"", "\"skip\"", "\"degrade\""}) {
+    for (auto at = text.find(p); at != std::string::npos; at = text.find(p)) text.replace(at, std::string(p).size(), "\"warn\"");
+  }
+  return text;
 }
 
 /// Parses config text as if it were the shipped file (relative paths resolve the same way).

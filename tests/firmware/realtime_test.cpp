@@ -5,23 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstdlib>
 
 #include "firmware_test_support.hpp"
 #include "ringlet/firmware/stack.hpp"
 
 namespace ringlet::firmware {
 namespace {
-
-// Under an emulator or a sanitizer a task's CPU time says nothing about the robot: the build
-// system sets RINGLET_CPU_SLOWDOWN for those builds (qemu-aarch64, ASan) and the budgets are
-// scaled by it. Native builds run with 1.
-double cpu_slowdown() {
-  const char* s = std::getenv("RINGLET_CPU_SLOWDOWN");
-  if (s == nullptr) return 1.0;
-  const double v = std::strtod(s, nullptr);
-  return v >= 1.0 ? v : 1.0;
-}
 
 TEST(RealClock, TwoSecondsAt100HzKeepEveryTaskP99CpuInsideItsBudget) {
   auto text = test::shipped_config_text();
@@ -36,7 +25,7 @@ TEST(RealClock, TwoSecondsAt100HzKeepEveryTaskP99CpuInsideItsBudget) {
 
   const auto& frames = exec.frame_stats();
   EXPECT_EQ(frames.frames + frames.slips, kFrames);
-  const double slowdown = cpu_slowdown();
+  const double slowdown = test::kCpuSlowdown;
   std::printf("real clock, %llu frames (slowdown factor for budgets: %.0f)\n",
               static_cast<unsigned long long>(frames.frames), slowdown);
   for (std::size_t i = 0; i < exec.tasks().size(); ++i) {

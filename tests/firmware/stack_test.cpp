@@ -38,30 +38,36 @@ Run run(const std::string& text) {
   return r;
 }
 
+// What the robot does must not depend on the speed of the build under test (qemu, sanitizers):
+// these runs warn on overruns instead of acting on them, except where the policy is the point.
+std::string shipped() { return test::warn_only(shipped_config_text()); }
+
 TEST(FirmwareStack, ShippedMissionCompletesInLockstep) {
-  const auto r = run(shipped_config_text());
+  const auto r = run(shipped());
   EXPECT_TRUE(r.summary.complete);
   EXPECT_EQ(r.summary.goals_reached, r.summary.goal_count);
   EXPECT_GT(r.summary.goal_count, 3U);
   EXPECT_EQ(r.summary.collisions, 0U);
-  EXPECT_EQ(r.overruns, 0U);
-  EXPECT_EQ(r.frame_overruns, 0U);
+  if (test::kNativeSpeed) {
+    EXPECT_EQ(r.overruns, 0U);
+    EXPECT_EQ(r.frame_overruns, 0U);
+  }
   EXPECT_FALSE(r.summary.safe_state);
   EXPECT_TRUE(r.safe_state) << "a clean shutdown ends in the safe state";
   EXPECT_EQ(exit_code(r.summary), 0);
 }
 
 TEST(FirmwareStack, SameSeedSameTrajectoryOtherSeedOtherTrajectory) {
-  const auto a = run(shipped_config_text());
-  const auto b = run(shipped_config_text());
-  const auto c = run(with_line(shipped_config_text(), "seed", "seed = 7"));
+  const auto a = run(shipped());
+  const auto b = run(shipped());
+  const auto c = run(with_line(shipped(), "seed", "seed = 7"));
   EXPECT_EQ(a.summary.trajectory_hash, b.summary.trajectory_hash);
   EXPECT_EQ(a.summary.mission_seconds, b.summary.mission_seconds);
   EXPECT_NE(a.summary.trajectory_hash, c.summary.trajectory_hash) << "GPS noise must depend on the seed";
 }
 
 TEST(FirmwareStack, EightyThreeHertzCompletesTheMission) {
-  const auto r = run(with_line(shipped_config_text(), "period_us", "period_us = 12000"));
+  const auto r = run(with_line(shipped(), "period_us", "period_us = 12000"));
   EXPECT_TRUE(r.summary.complete);
   EXPECT_EQ(r.summary.collisions, 0U);
 }
@@ -77,7 +83,7 @@ TEST(FirmwareStack, FailsafePolicyCommandsTheSafeStateAndExitCodeSaysSo) {
 }
 
 TEST(FirmwareStack, TimeoutIsAnIncompleteMission) {
-  const auto r = run(with_line(shipped_config_text(), "timeout_s", "timeout_s = 5"));
+  const auto r = run(with_line(shipped(), "timeout_s", "timeout_s = 5"));
   EXPECT_FALSE(r.summary.complete);
   EXPECT_NEAR(r.summary.mission_seconds, 5.0, 0.011);
   EXPECT_EQ(exit_code(r.summary), 3);
