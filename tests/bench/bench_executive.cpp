@@ -14,6 +14,7 @@
 
 #include "ringlet/executive/executive.hpp"
 #include "ringlet/executive/histogram.hpp"
+#include "ringlet/hal/null_actuators.hpp"
 #include "ringlet/hal/virtual_clock.hpp"
 
 namespace {
@@ -42,16 +43,6 @@ class EmptyTask final : public Task {
 
  private:
   std::uint64_t runs_ = 0;
-};
-
-class NullActuators final : public ringlet::hal::Actuators {
- public:
-  void write(const ringlet::hal::ActuatorCommand& /*cmd*/) noexcept override {}
-  void enter_safe_state() noexcept override { safe_ = true; }
-  [[nodiscard]] bool in_safe_state() const noexcept override { return safe_; }
-
- private:
-  bool safe_ = false;
 };
 
 std::vector<std::unique_ptr<EmptyTask>> make_tasks(std::size_t n) {
@@ -110,7 +101,7 @@ void BM_ExecutiveDispatch(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
   auto owned = make_tasks(n);
   ringlet::hal::VirtualClock clock;
-  NullActuators actuators;
+  ringlet::hal::NullActuators actuators;
   ExecutiveConfig config;
   config.period = kPeriod;
   std::vector<TaskBinding> bindings;

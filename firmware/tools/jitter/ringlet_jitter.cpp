@@ -26,6 +26,7 @@
 #include "ringlet/executive/executive.hpp"
 #include "ringlet/executive/histogram.hpp"
 #include "ringlet/executive/realtime.hpp"
+#include "ringlet/hal/null_actuators.hpp"
 #include "ringlet/hal/monotonic_clock.hpp"
 
 namespace {
@@ -100,21 +101,11 @@ class TrivialTask final : public ringlet::executive::Task {
   std::uint64_t sum_ = 0;
 };
 
-class NoActuators final : public ringlet::hal::Actuators {
- public:
-  void write(const ringlet::hal::ActuatorCommand& /*cmd*/) noexcept override {}
-  void enter_safe_state() noexcept override { safe_ = true; }
-  [[nodiscard]] bool in_safe_state() const noexcept override { return safe_; }
-
- private:
-  bool safe_ = false;
-};
-
 // (b) The executive loop on the real clock.
 PhaseResult measure_executive(Nanos period, std::uint64_t frames) {
   ringlet::hal::MonotonicClock clock;
   ringlet::hal::ThreadStopwatch stopwatch;
-  NoActuators actuators;
+  ringlet::hal::NullActuators actuators;
   TrivialTask task;
   ringlet::executive::ExecutiveConfig config;
   config.period = period;
