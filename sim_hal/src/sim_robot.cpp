@@ -54,6 +54,11 @@ void SimRobot::write(const hal::ActuatorCommand& cmd) noexcept {
   command_ = cmd;
 }
 
+std::optional<hal::RobotPoint> SimRobot::true_ball_in_robot_frame() const noexcept {
+  if (!world_.ball) return std::nullopt;
+  return hal::to_robot_frame(state_.pose, world_.ball->position.x, world_.ball->position.y);
+}
+
 void SimRobot::enter_safe_state() noexcept { safe_.store(true, std::memory_order_release); }
 
 bool SimRobot::in_safe_state() const noexcept { return safe_.load(std::memory_order_acquire); }

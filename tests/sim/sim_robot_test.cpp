@@ -45,6 +45,21 @@ TEST(SimRobot, IsTheSimBackendWithoutCamera) {
   EXPECT_EQ(robot.steps(), 0U);
 }
 
+TEST(SimRobot, TrueBallIsInTheRobotFrameAndFollowsTheRobot) {
+  World world = box_world(10.0, 10.0, {2.0, 2.0, 0.0});  // facing north
+  EXPECT_FALSE(SimRobot(world, SimConfig{}).true_ball_in_robot_frame().has_value());
+  world.ball = Ball{{1.0, 5.0}, 0.1};  // 3 m ahead, 1 m to the left
+  SimRobot robot(world, SimConfig{});
+  auto ball = robot.true_ball_in_robot_frame();
+  ASSERT_TRUE(ball.has_value());
+  EXPECT_NEAR(ball->x, 3.0, 1e-12);
+  EXPECT_NEAR(ball->y, 1.0, 1e-12);
+  (void)run(robot, drive(1.0), 100);  // drives north towards it
+  ball = robot.true_ball_in_robot_frame();
+  EXPECT_NEAR(ball->x, 5.0 - robot.true_state().pose.y, 1e-9);
+  EXPECT_NEAR(ball->y, 1.0, 1e-9);
+}
+
 TEST(SimRobot, EachReadAdvancesExactlyOnePeriod) {
   SimConfig config;
   config.period = std::chrono::milliseconds(20);

@@ -25,6 +25,23 @@ inline double bearing_to(const Pose2& from, double x, double y) noexcept {
   return std::atan2(x - from.x, y - from.y);
 }
 
+/// A point in the robot frame: x straight ahead, y to the robot's left (the NAO's convention, so
+/// that a head yaw of atan2(y, x), positive to the left, looks at it).
+struct RobotPoint {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+/// The world point (wx, wy) seen from `pose`: ahead is (sin theta, cos theta), left is
+/// (-cos theta, sin theta) in the world frame.
+inline RobotPoint to_robot_frame(const Pose2& pose, double wx, double wy) noexcept {
+  const double dx = wx - pose.x;
+  const double dy = wy - pose.y;
+  const double s = std::sin(pose.theta);
+  const double c = std::cos(pose.theta);
+  return {dx * s + dy * c, -dx * c + dy * s};
+}
+
 constexpr double deg_to_rad(double d) noexcept { return d * std::numbers::pi / 180.0; }
 constexpr double rad_to_deg(double r) noexcept { return r * 180.0 / std::numbers::pi; }
 

@@ -5,6 +5,7 @@
 // One seeded RNG (std::mt19937_64) feeds all noise.
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <random>
 
 #include "ringlet/hal/robot.hpp"
@@ -50,6 +51,8 @@ class SimRobot final : public hal::Robot, private hal::Sensors, private hal::Act
   [[nodiscard]] std::uint64_t collisions() const noexcept { return collisions_; }  // contact events
   [[nodiscard]] double distance_travelled() const noexcept { return distance_; }
   [[nodiscard]] const SimConfig& config() const noexcept { return config_; }
+  /// Where the world's ball really is in the robot frame (none when the world has no ball).
+  [[nodiscard]] std::optional<hal::RobotPoint> true_ball_in_robot_frame() const noexcept;
 
  private:
   // hal::Sensors
