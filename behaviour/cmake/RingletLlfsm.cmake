@@ -8,6 +8,8 @@
 # program (stdlib-only Python 3), so this works unchanged in cross builds. The target must link
 # ringlet_llfsm and ringlet_whiteboard (the generated code uses both).
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
+# Cached so that every directory sees them (find_package results are directory-scoped).
+set(RINGLET_PYTHON3 ${Python3_EXECUTABLE} CACHE INTERNAL "host Python 3 for the generators")
 set(RINGLET_LLFSMC ${CMAKE_CURRENT_LIST_DIR}/../llfsmc/llfsmc.py CACHE INTERNAL "LLFSM model compiler")
 
 function(ringlet_llfsm_machines target)
@@ -28,7 +30,7 @@ function(ringlet_llfsm_machines target)
     set(dot ${out}/dot/${stem}.dot)
     add_custom_command(
       OUTPUT ${hpp} ${cpp} ${dot}
-      COMMAND ${Python3_EXECUTABLE} ${RINGLET_LLFSMC} ${model_abs}
+      COMMAND ${RINGLET_PYTHON3} ${RINGLET_LLFSMC} ${model_abs}
               --hpp ${hpp} --cpp ${cpp} --dot ${dot}
               --namespace ${ARG_NAMESPACE} --include-dir ${ARG_INCLUDE_DIR}
       DEPENDS ${model_abs} ${RINGLET_LLFSMC}
