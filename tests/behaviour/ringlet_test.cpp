@@ -302,7 +302,7 @@ TEST(Schedule, RingletsPerTurnAndOrder) {
 TEST(Schedule, StatsMeasureEachRingletWithTheStopwatch) {
   Log log;
   hal::VirtualClock clock;
-  Schedule sched(clock);
+  Schedule sched(clock, nullptr, Timing::kWallAndCpu);
   ScriptedMachine m("M", {"S"}, log);
   int cost = 0;
   m.on_internal(0, [&](ScriptedMachine&) { clock.advance(std::chrono::microseconds(++cost)); });
@@ -317,6 +317,14 @@ TEST(Schedule, StatsMeasureEachRingletWithTheStopwatch) {
   EXPECT_EQ(st->mean_wall(), 2us);
   EXPECT_EQ(st->max_cpu, 3us);
   EXPECT_EQ(sched.stats("nobody"), nullptr);
+
+  Schedule wall_only(clock);  // the default: no CPU clock reads
+  ScriptedMachine w("W", {"S"}, log);
+  w.on_internal(0, [&](ScriptedMachine&) { clock.advance(5us); });
+  wall_only.add(w);
+  wall_only.run_turn(0ns);
+  EXPECT_EQ(wall_only.stats(0).max_wall, 5us);
+  EXPECT_EQ(wall_only.stats(0).max_cpu, 0ns);
 }
 
 // after() runs on the executive's `now`, so virtual time gives the same answer on every run.

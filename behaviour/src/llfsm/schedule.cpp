@@ -49,22 +49,33 @@ void Schedule::run_turn(hal::Nanos now) noexcept {
   if (bus_ != nullptr) bus_->poll(*this);
   for (Entry& e : entries_) {
     for (std::uint32_t i = 0; i < e.ringlets; ++i) {
-      const hal::Nanos w0 = stopwatch_.wall_now();
-      const hal::Nanos c0 = stopwatch_.cpu_now();
-      e.machine->ringlet(now);
-      const hal::Nanos wall = stopwatch_.wall_now() - w0;
-      const hal::Nanos cpu = stopwatch_.cpu_now() - c0;
-      RingletStats& st = e.stats;
-      ++st.samples;
-      st.last_wall = wall;
-      st.total_wall += wall;
-      if (wall > st.max_wall) st.max_wall = wall;
-      st.last_cpu = cpu;
-      st.total_cpu += cpu;
-      if (cpu > st.max_cpu) st.max_cpu = cpu;
+      if (timing_ == Timing::kOff) {
+        e.machine->ringlet(now);
+      } else {
+        measured_ringlet(e, now);
+      }
     }
   }
   ++turns_;
+}
+
+void Schedule::measured_ringlet(Entry& e, hal::Nanos now) noexcept {
+  const bool cpu_too = timing_ == Timing::kWallAndCpu;
+  const hal::Nanos c0 = cpu_too ? stopwatch_.cpu_now() : hal::Nanos{0};
+  const hal::Nanos w0 = stopwatch_.wall_now();
+  e.machine->ringlet(now);
+  const hal::Nanos wall = stopwatch_.wall_now() - w0;
+  RingletStats& st = e.stats;
+  ++st.samples;
+  st.last_wall = wall;
+  st.total_wall += wall;
+  if (wall > st.max_wall) st.max_wall = wall;
+  if (cpu_too) {
+    const hal::Nanos cpu = stopwatch_.cpu_now() - c0;
+    st.last_cpu = cpu;
+    st.total_cpu += cpu;
+    if (cpu > st.max_cpu) st.max_cpu = cpu;
+  }
 }
 
 bool Schedule::request(std::string_view machine, Request r) noexcept {
