@@ -28,6 +28,15 @@ void* operator new(std::size_t size) { return counted_alloc(size, alignof(std::m
 void* operator new(std::size_t size, std::align_val_t align) {
   return counted_alloc(size, static_cast<std::size_t>(align));
 }
+// The array forms too: sanitizer runtimes intercept them directly instead of forwarding.
+void* operator new[](std::size_t size) { return counted_alloc(size, alignof(std::max_align_t)); }
+void* operator new[](std::size_t size, std::align_val_t align) {
+  return counted_alloc(size, static_cast<std::size_t>(align));
+}
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
@@ -36,7 +45,7 @@ void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::fre
 namespace ringlet::wb {
 namespace {
 
-TEST(NoAllocation, PostGetReadDispatchAndBinary) {
+TEST(WbNoAllocation, PostGetReadDispatchAndBinary) {
   Whiteboard wb(8);
   double sum = 0.0;
   wb.subscribe<BallBelief>([&sum](const BallBelief& b) { sum += b.x; });
@@ -68,7 +77,7 @@ TEST(NoAllocation, PostGetReadDispatchAndBinary) {
   EXPECT_GT(sum, 0.0);
 }
 
-TEST(NoAllocation, CounterWorks) {
+TEST(WbNoAllocation, CounterWorks) {
   const std::size_t before = g_allocations.load();
   Whiteboard wb;  // the rings are allocated here
   EXPECT_GT(g_allocations.load(), before);

@@ -20,10 +20,10 @@ std::vector<std::byte> bytes(std::initializer_list<int> v) {
 }
 
 template <class T>
-class BinaryRoundTrip : public ::testing::Test {};
-TYPED_TEST_SUITE(BinaryRoundTrip, AllMessageTypes);
+class WbBinaryRoundTrip : public ::testing::Test {};
+TYPED_TEST_SUITE(WbBinaryRoundTrip, AllMessageTypes);
 
-TYPED_TEST(BinaryRoundTrip, EveryProfileDecodesBitIdentical) {
+TYPED_TEST(WbBinaryRoundTrip, EveryProfileDecodesBitIdentical) {
   using T = TypeParam;
   for (int p = 0; p < kProfiles; ++p) {
     const T msg = sample<T>(p);
@@ -35,7 +35,7 @@ TYPED_TEST(BinaryRoundTrip, EveryProfileDecodesBitIdentical) {
   }
 }
 
-TYPED_TEST(BinaryRoundTrip, HeaderCarriesIdVersionAndSize) {
+TYPED_TEST(WbBinaryRoundTrip, HeaderCarriesIdVersionAndSize) {
   using T = TypeParam;
   const auto wire = bytes_of(T{});
   const auto h = peek_header(wire);
@@ -45,7 +45,7 @@ TYPED_TEST(BinaryRoundTrip, HeaderCarriesIdVersionAndSize) {
   EXPECT_EQ(h->payload_size, payload_size<T>());
 }
 
-TYPED_TEST(BinaryRoundTrip, ShortBuffersAreRefused) {
+TYPED_TEST(WbBinaryRoundTrip, ShortBuffersAreRefused) {
   using T = TypeParam;
   const auto wire = bytes_of(sample<T>(1));
   for (std::size_t n = 0; n < wire.size(); ++n) {
@@ -55,7 +55,7 @@ TYPED_TEST(BinaryRoundTrip, ShortBuffersAreRefused) {
   EXPECT_EQ(encode(T{}, small), 0U);
 }
 
-TEST(BinaryForm, IsLittleEndianWithAKnownLayout) {
+TEST(WbBinaryForm, IsLittleEndianWithAKnownLayout) {
   const auto wire = bytes_of(HeadCommand{1.0, -2.0});
   EXPECT_EQ(wire, bytes({0x02, 0x00, 0x01, 0x00, 0x10, 0x00, 0x00, 0x00,    // id 2, v1, 16 bytes
                          0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xF0, 0x3F,    // 1.0
@@ -77,14 +77,14 @@ TEST(BinaryForm, IsLittleEndianWithAKnownLayout) {
   EXPECT_EQ(cw.back(), std::byte{1});
 }
 
-TEST(BinaryForm, WrongTypeIdIsRefused) {
+TEST(WbBinaryForm, WrongTypeIdIsRefused) {
   const auto wire = bytes_of(HeadCommand{1.0, 2.0});
   const auto r = decode<Pose>(wire);
   ASSERT_FALSE(r.has_value());
   EXPECT_EQ(r.error(), "Pose: wrong type id 2 (expected 4)");
 }
 
-TEST(BinaryForm, WrongVersionIsRefused) {
+TEST(WbBinaryForm, WrongVersionIsRefused) {
   auto wire = bytes_of(HeadCommand{1.0, 2.0});
   wire[2] = std::byte{2};
   const auto r = decode<HeadCommand>(wire);
@@ -92,13 +92,13 @@ TEST(BinaryForm, WrongVersionIsRefused) {
   EXPECT_EQ(r.error(), "HeadCommand: schema version 2 (expected 1)");
 }
 
-TEST(BinaryForm, WrongPayloadSizeIsRefused) {
+TEST(WbBinaryForm, WrongPayloadSizeIsRefused) {
   auto wire = bytes_of(HeadCommand{1.0, 2.0});
   wire[4] = std::byte{15};
   EXPECT_FALSE(decode<HeadCommand>(wire).has_value());
 }
 
-TEST(BinaryForm, InvalidFieldBytesAreRefused) {
+TEST(WbBinaryForm, InvalidFieldBytesAreRefused) {
   auto b = bytes_of(BallBelief{});
   b[8] = std::byte{2};  // visible: a bool that is neither 0 nor 1
   EXPECT_EQ(decode<BallBelief>(b).error(), "BallBelief.visible: invalid bytes");
@@ -112,7 +112,7 @@ TEST(BinaryForm, InvalidFieldBytesAreRefused) {
   EXPECT_EQ(decode<FsmControl>(e).error(), "FsmControl.command: invalid bytes");
 }
 
-TEST(BinaryForm, PostBinaryRoutesByHeaderAndRefusesGarbage) {
+TEST(WbBinaryForm, PostBinaryRoutesByHeaderAndRefusesGarbage) {
   Whiteboard wb;
   const Pose p{1.0, 2.0, 3.0, true};
   ASSERT_TRUE(wb.post_binary(bytes_of(p)).ok());

@@ -30,7 +30,7 @@ ExecutiveTiming timing(std::uint64_t k) {
 
 bool consistent(const ExecutiveTiming& t) { return t == timing(t.frames); }
 
-TEST(Concurrency, OneWriterThreeReadersNeverSeeATornMessage) {
+TEST(WbConcurrency, OneWriterThreeReadersNeverSeeATornMessage) {
   Whiteboard wb(4);
   std::atomic<bool> done{false};
   std::atomic<std::uint64_t> torn{0};
@@ -107,7 +107,7 @@ TEST(Concurrency, OneWriterThreeReadersNeverSeeATornMessage) {
   EXPECT_EQ(wb.get<ExecutiveTiming>(), timing(kPosts));
 }
 
-TEST(Concurrency, ToolThreadReadsWhileTheWriterPosts) {
+TEST(WbConcurrency, ToolThreadReadsWhileTheWriterPosts) {
   Whiteboard wb(2);
   std::atomic<std::uint64_t> torn{0};
   std::atomic<std::uint64_t> delivered{0};

@@ -10,7 +10,7 @@ namespace {
 
 Pose pose(std::uint64_t k) { return Pose{static_cast<double>(k), 0.0, 0.0, true}; }
 
-TEST(Generations, NothingPostedReadsAsDefault) {
+TEST(WbGenerations, NothingPostedReadsAsDefault) {
   Whiteboard wb;
   EXPECT_EQ(wb.generation<Pose>(), 0U);
   EXPECT_FALSE(wb.has_new<Pose>(0));
@@ -19,7 +19,7 @@ TEST(Generations, NothingPostedReadsAsDefault) {
   EXPECT_EQ(wb.read<Pose>(0).status, ReadStatus::kNotYet);
 }
 
-TEST(Generations, CountNewestAndHasNew) {
+TEST(WbGenerations, CountNewestAndHasNew) {
   Whiteboard wb;
   wb.post(pose(1));
   wb.post(pose(2));
@@ -30,7 +30,7 @@ TEST(Generations, CountNewestAndHasNew) {
   EXPECT_EQ(wb.generation<HeadCommand>(), 0U);  // types are independent
 }
 
-TEST(Generations, ReadByGenerationWithinTheRing) {
+TEST(WbGenerations, ReadByGenerationWithinTheRing) {
   Whiteboard wb(8);
   for (std::uint64_t k = 1; k <= 8; ++k) wb.post(pose(k));
   for (std::uint64_t g = 1; g <= 8; ++g) {
@@ -42,7 +42,7 @@ TEST(Generations, ReadByGenerationWithinTheRing) {
   EXPECT_EQ(wb.read<Pose>(9).status, ReadStatus::kNotYet);
 }
 
-TEST(Generations, OverrunReportsExactlyHowManyWereMissed) {
+TEST(WbGenerations, OverrunReportsExactlyHowManyWereMissed) {
   Whiteboard wb(4);
   for (std::uint64_t k = 1; k <= 11; ++k) wb.post(pose(k));  // ring holds 8..11
   for (std::uint64_t g = 1; g <= 7; ++g) {
@@ -54,14 +54,14 @@ TEST(Generations, OverrunReportsExactlyHowManyWereMissed) {
   EXPECT_EQ(wb.read<Pose>(8).msg, pose(8));
 }
 
-TEST(Generations, DepthIsRoundedUpToAPowerOfTwo) {
+TEST(WbGenerations, DepthIsRoundedUpToAPowerOfTwo) {
   EXPECT_EQ(Whiteboard(0).depth(), 2U);
   EXPECT_EQ(Whiteboard(5).depth(), 8U);
   EXPECT_EQ(Whiteboard(16).depth(), 16U);
   EXPECT_EQ(Whiteboard{}.depth(), 8U);
 }
 
-TEST(Generations, LargeMessagesKeepEveryByte) {
+TEST(WbGenerations, LargeMessagesKeepEveryByte) {
   Whiteboard wb(2);
   Print p;
   p.text = std::string(128, 'x');
@@ -69,7 +69,7 @@ TEST(Generations, LargeMessagesKeepEveryByte) {
   EXPECT_EQ(wb.get<Print>().text.view(), std::string(128, 'x'));
 }
 
-TEST(Handle, IsTheTypedTView) {
+TEST(WbHandle, IsTheTypedTView) {
   Whiteboard wb;
   Print_t print(wb);
   Print p;

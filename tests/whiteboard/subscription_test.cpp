@@ -16,7 +16,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
-TEST(Dispatch, OrderIsTypeIdThenSubscriptionOrder) {
+TEST(WbDispatch, OrderIsTypeIdThenSubscriptionOrder) {
   Whiteboard wb;
   std::vector<std::string> log;
   // Subscribed in a scrambled type order on purpose.
@@ -41,7 +41,7 @@ TEST(Dispatch, OrderIsTypeIdThenSubscriptionOrder) {
   EXPECT_TRUE(log.empty());  // nothing new
 }
 
-TEST(Dispatch, StartsAfterTheGenerationCurrentAtSubscription) {
+TEST(WbDispatch, StartsAfterTheGenerationCurrentAtSubscription) {
   Whiteboard wb;
   wb.post(Pose{1.0, 0.0, 0.0, true});
   std::vector<double> xs;
@@ -51,7 +51,7 @@ TEST(Dispatch, StartsAfterTheGenerationCurrentAtSubscription) {
   EXPECT_EQ(xs, (std::vector<double>{2.0}));
 }
 
-TEST(Dispatch, EveryGenerationOrTheMissedCount) {
+TEST(WbDispatch, EveryGenerationOrTheMissedCount) {
   Whiteboard wb(4);
   std::vector<std::uint64_t> gens;
   std::vector<std::uint64_t> missed;
@@ -75,14 +75,14 @@ TEST(Dispatch, EveryGenerationOrTheMissedCount) {
   EXPECT_EQ(wb.missed(id), 6U);
 }
 
-TEST(Dispatch, SubscribingAfterStartIsRefused) {
+TEST(WbDispatch, SubscribingAfterStartIsRefused) {
   Whiteboard wb;
   wb.subscribe<Pose>([](const Pose&) {});
   wb.dispatch();
   EXPECT_THROW(wb.subscribe<Pose>([](const Pose&) {}), std::logic_error);
 }
 
-TEST(ToolThread, DeliversOffTheWritersThread) {
+TEST(WbToolThread, DeliversOffTheWritersThread) {
   Whiteboard wb;
   std::atomic<int> seen{0};
   std::atomic<bool> other_thread{false};
@@ -110,7 +110,7 @@ TEST(ToolThread, DeliversOffTheWritersThread) {
   EXPECT_EQ(cycle_calls, 5);
 }
 
-TEST(ToolThread, StopDeliversWhatWasPostedBefore) {
+TEST(WbToolThread, StopDeliversWhatWasPostedBefore) {
   Whiteboard wb;
   std::atomic<int> seen{0};
   wb.subscribe<Print>([&](const Print&) { seen.fetch_add(1); }, Delivery::kToolThread);

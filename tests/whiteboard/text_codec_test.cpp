@@ -13,10 +13,10 @@ namespace ringlet::wb::test {
 namespace {
 
 template <class T>
-class TextRoundTrip : public ::testing::Test {};
-TYPED_TEST_SUITE(TextRoundTrip, AllMessageTypes);
+class WbTextRoundTrip : public ::testing::Test {};
+TYPED_TEST_SUITE(WbTextRoundTrip, AllMessageTypes);
 
-TYPED_TEST(TextRoundTrip, EveryProfileReadsBackBitIdentical) {
+TYPED_TEST(WbTextRoundTrip, EveryProfileReadsBackBitIdentical) {
   using T = TypeParam;
   for (int p = 0; p < kProfiles; ++p) {
     const T msg = sample<T>(p);
@@ -29,14 +29,14 @@ TYPED_TEST(TextRoundTrip, EveryProfileReadsBackBitIdentical) {
   }
 }
 
-TYPED_TEST(TextRoundTrip, DefaultReadsBack) {
+TYPED_TEST(WbTextRoundTrip, DefaultReadsBack) {
   using T = TypeParam;
   const Result<T> back = T::from_string(T{}.description());
   ASSERT_TRUE(back.has_value()) << back.error();
   EXPECT_EQ(*back, T{});
 }
 
-TEST(TextForm, IsReadableCommaSeparated) {
+TEST(WbTextForm, IsReadableCommaSeparated) {
   BallBelief b;
   b.visible = true;
   b.x = 1.5;
@@ -54,7 +54,7 @@ TEST(TextForm, IsReadableCommaSeparated) {
   EXPECT_EQ(l.description(), "inf,-0,65535");
 }
 
-TEST(TextForm, DoublesUseTheShortestExactForm) {
+TEST(WbTextForm, DoublesUseTheShortestExactForm) {
   HeadCommand h{0.1 + 0.2, 1e-320};
   EXPECT_EQ(h.description(), "0.30000000000000004,1e-320");
   const auto back = HeadCommand::from_string(h.description());
@@ -63,7 +63,7 @@ TEST(TextForm, DoublesUseTheShortestExactForm) {
   EXPECT_EQ(back->pitch, 1e-320);
 }
 
-TEST(TextForm, NanInfAndNegativeZeroReadBack) {
+TEST(WbTextForm, NanInfAndNegativeZeroReadBack) {
   const auto p = Pose::from_string("nan,-inf,-0,1");
   ASSERT_TRUE(p.has_value()) << p.error();
   EXPECT_TRUE(std::isnan(p->x));
@@ -72,7 +72,7 @@ TEST(TextForm, NanInfAndNegativeZeroReadBack) {
   EXPECT_TRUE(p->valid);
 }
 
-TEST(TextForm, StringsEscapeCommasBackslashesAndControls) {
+TEST(WbTextForm, StringsEscapeCommasBackslashesAndControls) {
   Print pr;
   pr.text = std::string_view("a,b\\c\nd\x01", 8);
   EXPECT_EQ(pr.description(), "a\\,b\\\\c\\nd\\x01");
@@ -81,7 +81,7 @@ TEST(TextForm, StringsEscapeCommasBackslashesAndControls) {
   EXPECT_EQ(back->text, pr.text);
 }
 
-TEST(TextForm, ToleratesSpacesAroundNumbersAndALeadingPlus) {
+TEST(WbTextForm, ToleratesSpacesAroundNumbersAndALeadingPlus) {
   const auto m = MotionCommand::from_string(" +0.5 , -1 ,  true ");
   ASSERT_TRUE(m.has_value()) << m.error();
   EXPECT_EQ(m->curvature, 0.5);
@@ -89,7 +89,7 @@ TEST(TextForm, ToleratesSpacesAroundNumbersAndALeadingPlus) {
   EXPECT_TRUE(m->stop);
 }
 
-TEST(TextForm, ArraysAreTheirElements) {
+TEST(WbTextForm, ArraysAreTheirElements) {
   ExecutiveTiming t;
   t.frames = 10;
   t.task_count = 2;
@@ -100,13 +100,13 @@ TEST(TextForm, ArraysAreTheirElements) {
 
 // ---- errors -------------------------------------------------------------------------------------
 
-TEST(TextErrors, NameTheFieldAndQuoteTheToken) {
+TEST(WbTextErrors, NameTheFieldAndQuoteTheToken) {
   const auto r = BallBelief::from_string("true,abc,0,0,false");
   ASSERT_FALSE(r.has_value());
   EXPECT_EQ(r.error(), "BallBelief.x: not a number: \"abc\"");
 }
 
-TEST(TextErrors, EachKind) {
+TEST(WbTextErrors, EachKind) {
   EXPECT_EQ(BallBelief::from_string("yes,0,0,0,false").error(),
             "BallBelief.visible: not a bool (true/false/1/0): \"yes\"");
   EXPECT_EQ(BallBelief::from_string("true,1,2").error(), "BallBelief.confidence: missing");
@@ -126,7 +126,7 @@ TEST(TextErrors, EachKind) {
             "ExecutiveTiming.task_worst_ns[2]: not a number: \"x\"");
 }
 
-TEST(TextErrors, BadTextLeavesTheBoardUnchanged) {
+TEST(WbTextErrors, BadTextLeavesTheBoardUnchanged) {
   Whiteboard wb;
   wb.post(BallBelief{true, 1.0, 2.0, 0.5, false});
   const Status s = wb.post_text("BallBelief", "true,abc,0,0,false");

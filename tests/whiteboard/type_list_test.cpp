@@ -9,7 +9,7 @@
 namespace ringlet::wb {
 namespace {
 
-TEST(TypeList, NamesAndIdsAreTheSchemaOnes) {
+TEST(WbTypeList, NamesAndIdsAreTheSchemaOnes) {
   const std::vector<std::string> names{"BallBelief", "HeadCommand", "MotionCommand",
                                        "Pose",       "LaserSummary", "FsmStatus",
                                        "FsmControl", "ExecutiveTiming", "Print"};
@@ -23,7 +23,7 @@ TEST(TypeList, NamesAndIdsAreTheSchemaOnes) {
   static_assert(kIndexOf<Pose> == 3);
 }
 
-TEST(TypeList, ForEachTypeVisitsAllInIdOrder) {
+TEST(WbTypeList, ForEachTypeVisitsAllInIdOrder) {
   std::vector<std::string> seen;
   for_each_type([&](auto t) {
     using T = typename decltype(t)::type;
@@ -33,7 +33,7 @@ TEST(TypeList, ForEachTypeVisitsAllInIdOrder) {
   for (std::size_t i = 0; i < kTypeCount; ++i) EXPECT_EQ(seen[i], kTypes[i].name);
 }
 
-TEST(TypeList, FindByNameOrId) {
+TEST(WbTypeList, FindByNameOrId) {
   ASSERT_TRUE(find_type("FsmStatus").has_value());
   EXPECT_EQ(find_type("FsmStatus")->id, FsmStatus::kId);
   EXPECT_EQ(find_type(TypeId{7})->name, "FsmControl");
@@ -41,7 +41,7 @@ TEST(TypeList, FindByNameOrId) {
   EXPECT_FALSE(find_type(TypeId{999}).has_value());
 }
 
-TEST(FixedString, TruncatesComparesAndViews) {
+TEST(WbFixedString, TruncatesComparesAndViews) {
   FixedString<4> s;
   EXPECT_TRUE(s.empty());
   EXPECT_FALSE(s.assign("hello"));
