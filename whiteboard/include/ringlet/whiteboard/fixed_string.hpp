@@ -25,6 +25,10 @@ class FixedString {
     assign(s);
     return *this;
   }
+  constexpr FixedString& operator=(const char* s) noexcept {  // else "x" is ambiguous
+    assign(s);
+    return *this;
+  }
 
   /// Copies at most N chars of `s`; returns false if it had to truncate.
   constexpr bool assign(std::string_view s) noexcept {
@@ -46,6 +50,9 @@ class FixedString {
   }
   friend constexpr bool operator==(const FixedString& a, std::string_view b) noexcept {
     return a.view() == b;
+  }
+  friend constexpr bool operator==(const FixedString& a, const char* b) noexcept {
+    return a.view() == std::string_view{b};
   }
 
  private:

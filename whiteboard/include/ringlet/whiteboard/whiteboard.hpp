@@ -132,6 +132,7 @@ class Whiteboard {
   struct Sub {
     std::function<void(const T&, const DeliveryInfo&)> callback;
     std::uint64_t last = 0;  // generation last delivered or skipped
+    std::uint64_t lost = 0;  // generations skipped since the last delivery
     std::atomic<std::uint64_t> missed_total{0};
     SubscriptionId id;
   };
@@ -170,18 +171,20 @@ class Whiteboard {
   static void deliver(const Ring<T>& ring, std::vector<std::unique_ptr<Sub<T>>>& subs) noexcept {
     for (auto& sub : subs) {
       const std::uint64_t head = ring.generation();
-      std::uint64_t lost = 0;
       while (sub->last < head) {
         const ReadResult<T> r = ring.read(sub->last + 1);
         if (r.status == ReadStatus::kMissed) {
-          lost += r.missed;
+          // May jump past `head` (the writer kept going); the loss is reported with the next
+          // delivery, even if that is in a later pass.
+          sub->lost += r.missed;
           sub->missed_total.fetch_add(r.missed, std::memory_order_relaxed);
           sub->last += r.missed;
           continue;
         }
         sub->last = r.generation;
-        sub->callback(r.msg, DeliveryInfo{r.generation, lost});
-        lost = 0;
+        const DeliveryInfo info{r.generation, sub->lost};
+        sub->lost = 0;
+        sub->callback(r.msg, info);
       }
     }
   }
