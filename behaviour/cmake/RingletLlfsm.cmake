@@ -1,0 +1,44 @@
+# ringlet_llfsm_machines(<target> MODELS a.machine ... [NAMESPACE ns] [INCLUDE_DIR dir])
+#
+# Compiles each LLFSM model at build time with behaviour/llfsmc/llfsmc.py into
+#   <build>/llfsm/<target>/include/<INCLUDE_DIR>/<stem>.hpp   (included as "<INCLUDE_DIR>/<stem>.hpp")
+#   <build>/llfsm/<target>/src/<stem>.cpp                      (added to <target>)
+#   <build>/llfsm/<target>/dot/<stem>.dot                      (the diagram)
+# A model error (printed as `model:line: message`) fails the build. The generator is a host
+# program (stdlib-only Python 3), so this works unchanged in cross builds. The target must link
+# ringlet_llfsm and ringlet_whiteboard (the generated code uses both).
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+# Cached so that every directory sees them (find_package results are directory-scoped).
+set(RINGLET_PYTHON3 ${Python3_EXECUTABLE} CACHE INTERNAL "host Python 3 for the generators")
+set(RINGLET_LLFSMC ${CMAKE_CURRENT_LIST_DIR}/../llfsmc/llfsmc.py CACHE INTERNAL "LLFSM model compiler")
+
+function(ringlet_llfsm_machines target)
+  cmake_parse_arguments(ARG "" "NAMESPACE;INCLUDE_DIR" "MODELS" ${ARGN})
+  if(NOT ARG_NAMESPACE)
+    set(ARG_NAMESPACE ringlet::behaviour::machines)
+  endif()
+  if(NOT ARG_INCLUDE_DIR)
+    set(ARG_INCLUDE_DIR ringlet/behaviour/machines)
+  endif()
+  set(out ${CMAKE_CURRENT_BINARY_DIR}/llfsm/${target})
+  set(dots "")
+  foreach(model IN LISTS ARG_MODELS)
+    get_filename_component(model_abs ${model} ABSOLUTE)
+    get_filename_component(stem ${model} NAME_WE)
+    set(hpp ${out}/include/${ARG_INCLUDE_DIR}/${stem}.hpp)
+    set(cpp ${out}/src/${stem}.cpp)
+    set(dot ${out}/dot/${stem}.dot)
+    add_custom_command(
+      OUTPUT ${hpp} ${cpp} ${dot}
+      COMMAND ${RINGLET_PYTHON3} ${RINGLET_LLFSMC} ${model_abs}
+              --hpp ${hpp} --cpp ${cpp} --dot ${dot}
+              --namespace ${ARG_NAMESPACE} --include-dir ${ARG_INCLUDE_DIR}
+      DEPENDS ${model_abs} ${RINGLET_LLFSMC}
+      COMMENT "llfsmc ${stem}.machine"
+      VERBATIM)
+    target_sources(${target} PRIVATE ${cpp} ${hpp})
+    list(APPEND dots ${dot})
+  endforeach()
+  target_include_directories(${target} PUBLIC ${out}/include)
+  set_property(TARGET ${target} APPEND PROPERTY RINGLET_LLFSM_DOTS ${dots})
+endfunction()

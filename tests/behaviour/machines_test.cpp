@@ -1,0 +1,125 @@
+// The shipped machines (behaviour/machines/*.machine) in a lockstep schedule.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "ringlet/behaviour/llfsm/providers.hpp"
+#include "ringlet/behaviour/llfsm/schedule.hpp"
+#include "ringlet/behaviour/machines/ball_tracker.hpp"
+#include "ringlet/behaviour/machines/mission.hpp"
+#include "ringlet/behaviour/machines/safety.hpp"
+#include "ringlet/hal/virtual_clock.hpp"
+
+namespace ringlet::behaviour::machines {
+namespace {
+
+using namespace std::chrono_literals;
+
+static_assert(BallTracker::kRequires.size() == 1 && BallTracker::kRequires[0] == "BallBelief");
+static_assert(BallTracker::kProvides.size() == 1 && BallTracker::kProvides[0] == "HeadCommand");
+static_assert(Safety::kRequires[0] == "LaserSummary" && Safety::kProvides[0] == "MotionCommand");
+static_assert(Mission::kRequires[0] == "Pose" && Mission::kProvides[0] == "MotionCommand");
+
+wb::LaserSummary laser(double nearest) {
+  wb::LaserSummary l{};
+  l.nearest_range = nearest;
+  l.valid_beams = 100;
+  return l;
+}
+
+struct MachinesTest : ::testing::Test {
+  wb::Whiteboard board{8};
+  hal::VirtualClock clock;
+  llfsm::Schedule sched{clock};
+  BallTracker tracker{board};
+  Mission mission{board};
+  Safety safety{board};
+};
+
+TEST_F(MachinesTest, BallTrackerPointsTheHeadAtTheBall) {
+  sched.add(tracker);
+  sched.run_turn(0ns);  // Init -> Loop
+  EXPECT_EQ(tracker.current_state_name(), "Loop");
+  wb::BallBelief ball{};
+  ball.visible = true;
+  ball.x = 1.0;
+  ball.y = 1.0;
+  board.post(ball);
+  sched.run_turn(1ms);  // Loop -> UpdateHead
+  sched.run_turn(2ms);  // UpdateHead: aim
+  const wb::HeadCommand head = board.get<wb::HeadCommand>();
+  EXPECT_NEAR(head.yaw, std::numbers::pi / 4.0, 1e-12);
+  EXPECT_NEAR(head.pitch, -std::atan2(0.5, std::sqrt(2.0)), 1e-12);
+  ball.y = -0.1;  // behind, to the right: beyond the neck, clamped
+  ball.x = -1.0;
+  board.post(ball);
+  sched.run_turn(3ms);
+  sched.run_turn(4ms);
+  EXPECT_DOUBLE_EQ(board.get<wb::HeadCommand>().yaw, -2.0);
+}
+
+TEST_F(MachinesTest, SafetyStopsWithHysteresisAndHoldsTheMission) {
+  sched.add(mission);
+  sched.add(safety, 2);
+  const std::string_view tasks[] = {"Pose", "LaserSummary", "BallBelief"};
+  EXPECT_TRUE(llfsm::check_providers(sched, tasks).ok());
+  wb::Pose pose{};
+  pose.valid = true;
+  board.post(pose);
+  board.post(laser(2.0));
+  hal::Nanos t{0};
+  const auto turn = [&] {
+    sched.run_turn(t);
+    t += 10ms;
+  };
+  turn();  // Safety starts Stopped (fail-safe) and suspends Mission
+  turn();
+  EXPECT_TRUE(board.get<wb::MotionCommand>().stop);
+  EXPECT_TRUE(mission.suspended());
+  for (int i = 0; i < 35; ++i) turn();  // clear for > 300 ms: released, Mission resumed
+  EXPECT_EQ(safety.current_state_name(), "Clear");
+  turn();
+  EXPECT_FALSE(mission.suspended());
+  EXPECT_FALSE(board.get<wb::MotionCommand>().stop);
+  EXPECT_GT(board.get<wb::MotionCommand>().velocity, 0.0);
+
+  board.post(laser(0.6));  // inside release_range but not stop_range: keeps going
+  turn();
+  EXPECT_EQ(safety.current_state_name(), "Clear");
+  board.post(laser(0.4));  // too close: the stop stands at the end of this very turn
+  turn();
+  EXPECT_TRUE(board.get<wb::MotionCommand>().stop);
+  turn();  // and from the next turn on the Mission is suspended
+  EXPECT_TRUE(mission.suspended());
+  EXPECT_TRUE(board.get<wb::MotionCommand>().stop);
+  board.post(laser(0.7));  // between the thresholds: stays stopped
+  for (int i = 0; i < 50; ++i) turn();
+  EXPECT_EQ(safety.current_state_name(), "Stopped");
+  EXPECT_EQ(safety.local_stops(), 2u);
+}
+
+TEST_F(MachinesTest, MissionAdvancesThroughItsGoals) {
+  sched.add(mission);
+  sched.run_turn(0ns);
+  EXPECT_EQ(mission.current_state_name(), "WaitForPose");
+  wb::Pose pose{};
+  pose.valid = true;
+  board.post(pose);
+  sched.run_turn(1ms);  // -> Drive
+  sched.run_turn(2ms);
+  EXPECT_GT(board.get<wb::MotionCommand>().velocity, 0.0);
+  for (const auto& [x, y] : {std::pair{2.0, 0.0}, {2.0, 2.0}, {0.0, 2.0}, {0.0, 0.0}}) {
+    pose.x = x;
+    pose.y = y;
+    board.post(pose);
+    for (int i = 0; i < 3; ++i) sched.run_turn(3ms);
+  }
+  EXPECT_EQ(mission.current_state_name(), "Done");
+  EXPECT_EQ(mission.local_goal(), 4u);
+  EXPECT_TRUE(board.get<wb::MotionCommand>().stop);
+}
+
+}  // namespace
+}  // namespace ringlet::behaviour::machines
