@@ -62,7 +62,14 @@ class Var:
 
     @property
     def member(self):
-        return ("x_" if self.kind == "external" else "l_") + self.name + "_"
+        return {"external": "x_", "local": "l_", "parameter": "p_"}[self.kind] + self.name + "_"
+
+    @property
+    def value_type(self):
+        """The C++ type the action code sees (a reference parameter's referred-to type)."""
+        if self.kind == "external":
+            return wb_type(self.ctype)
+        return self.ctype[:-1].rstrip() if self.ctype.endswith("&") else self.ctype
 
 
 class Transition:
@@ -229,6 +236,15 @@ def parse(text, errors):
                 errors.add(lineno, "expected 'local <name> : <C++ type> = <initial value>'")
                 continue
             declare(model, Var("local", m.group(1), m.group(2), lineno, init=m.group(3)), errors)
+        elif word == "parameter":
+            if state is not None:
+                errors.add(lineno, "parameters are declared outside states")
+                continue
+            m = re.fullmatch(r"parameter\s+(" + IDENT + r")\s*:\s*([^=]+?)", line)
+            if not m:
+                errors.add(lineno, "expected 'parameter <name> : <C++ type>' (no initial value: it is bound at construction)")
+                continue
+            declare(model, Var("parameter", m.group(1), m.group(2), lineno), errors)
         elif word == "state":
             m = re.fullmatch(r"state\s+(" + IDENT + r")(\s+initial)?", line)
             if state is not None:
@@ -426,9 +442,8 @@ def refs(model, code, const_all):
     for v in model.variables.values():
         if v.name not in used:
             continue
-        ctype = wb_type(v.ctype) if v.kind == "external" else v.ctype
         const = const_all or (v.kind == "external" and v.access == "read")
-        out.append(f"  [[maybe_unused]] {'const ' if const else ''}{ctype}& {v.name} = {v.member};")
+        out.append(f"  [[maybe_unused]] {'const ' if const else ''}{v.value_type}& {v.name} = {v.member};")
     return out
 
 
@@ -463,7 +478,7 @@ def generate_header(model, ns, include_path):
     e(f"  static constexpr std::array<std::string_view, {len(provs)}> kProvides{{"
       + ", ".join(f"{wb_type(v.ctype)}::kName" for v in provs) + "};")
     e()
-    e(f"  explicit {cls}(::ringlet::wb::Whiteboard& wb) noexcept;")
+    e(f"  explicit {cls}({constructor_params(model)}) noexcept;")
     e()
     e("  [[nodiscard]] std::size_t state_count() const noexcept override { return kStates.size(); }")
     e("  [[nodiscard]] std::string_view state_name(StateIndex s) const noexcept override {")
@@ -476,8 +491,7 @@ def generate_header(model, ns, include_path):
     e()
     e("  // Read-only views of the variables (tests, tools).")
     for v in model.variables.values():
-        ctype = wb_type(v.ctype) if v.kind == "external" else v.ctype
-        e(f"  [[nodiscard]] const {ctype}& {v.kind}_{v.name}() const noexcept {{ return {v.member}; }}")
+        e(f"  [[nodiscard]] const {v.value_type}& {v.kind}_{v.name}() const noexcept {{ return {v.member}; }}")
     e()
     e(" protected:")
     e("  void snapshot(StateIndex s) noexcept override;")
@@ -498,12 +512,20 @@ def generate_header(model, ns, include_path):
     for v in model.variables.values():
         if v.kind == "external":
             e(f"  {wb_type(v.ctype)} {v.member}{{}};  // {v.access}")
+        elif v.kind == "parameter":
+            e(f"  {v.ctype} {v.member};  // parameter: bound at construction, kept by restart")
         else:
             e(f"  {v.ctype} {v.member} = {v.init};")
     e("};")
     e()
     e(f"}}  // namespace {ns}")
     return e.text()
+
+
+def constructor_params(model):
+    """The whiteboard, then every parameter in declaration order."""
+    return ", ".join(["::ringlet::wb::Whiteboard& wb"] + [
+        f"{v.ctype} {v.name}" for v in model.variables.values() if v.kind == "parameter"])
 
 
 HOOKS = [("OnEntry", "on_entry"), ("OnExit", "on_exit"), ("Internal", "internal"),
@@ -521,9 +543,10 @@ def generate_source(model, ns, include_path, model_path, out_name):
     e("using namespace std::chrono_literals;")
     e("using ::ringlet::behaviour::llfsm::kNoState;")
     e()
-    e(f"{cls}::{cls}(::ringlet::wb::Whiteboard& wb) noexcept")
+    e(f"{cls}::{cls}({constructor_params(model)}) noexcept")
     initial = next((i for i, s in enumerate(model.states) if s.initial), 0)
-    e(f"    : ::ringlet::behaviour::llfsm::Machine(kName, {initial}), wb_(wb) {{}}")
+    bound = "".join(f", {v.member}({v.name})" for v in model.variables.values() if v.kind == "parameter")
+    e(f"    : ::ringlet::behaviour::llfsm::Machine(kName, {initial}), wb_(wb){bound} {{}}")
     e()
     if any(s.submachine for s in model.states):
         e(f"::ringlet::behaviour::llfsm::SubmachineLink {cls}::submachine(StateIndex s) const noexcept {{")

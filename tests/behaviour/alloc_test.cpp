@@ -2,6 +2,7 @@
 // shipped machines runs through state changes, suspensions and FsmControl requests.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -37,7 +38,9 @@ TEST(LlfsmAllocation, TurnsDoNotAllocate) {
   llfsm::WhiteboardFsmBus bus(board);
   llfsm::Schedule sched(clock, &bus);
   BallTracker tracker(board);
-  Mission mission(board);
+  const std::array<Waypoint, 2> goals_xy{{{5.0, 0.0}, {0.0, 0.0}}};
+  WaypointMission goals(goals_xy, 0.3, MoveToWaypointParams{});
+  Mission mission(board, goals);
   Safety safety(board);
   sched.add(tracker);
   sched.add(mission);

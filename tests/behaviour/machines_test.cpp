@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <array>
 
 #include "ringlet/behaviour/llfsm/providers.hpp"
 #include "ringlet/behaviour/llfsm/schedule.hpp"
@@ -34,7 +35,10 @@ struct MachinesTest : ::testing::Test {
   hal::VirtualClock clock;
   llfsm::Schedule sched{clock};
   BallTracker tracker{board};
-  Mission mission{board};
+  // A square of 2 m sides from the origin, back home.
+  const std::array<Waypoint, 4> square{{{2.0, 0.0}, {2.0, 2.0}, {0.0, 2.0}, {0.0, 0.0}}};
+  WaypointMission goals{square, 0.3, MoveToWaypointParams{}};
+  Mission mission{board, goals};
   Safety safety{board};
 };
 
@@ -51,7 +55,7 @@ TEST_F(MachinesTest, BallTrackerPointsTheHeadAtTheBall) {
   sched.run_turn(2ms);  // UpdateHead: aim
   const wb::HeadCommand head = board.get<wb::HeadCommand>();
   EXPECT_NEAR(head.yaw, std::numbers::pi / 4.0, 1e-12);
-  EXPECT_NEAR(head.pitch, -std::atan2(0.5, std::sqrt(2.0)), 1e-12);
+  EXPECT_NEAR(head.pitch, std::atan2(0.5, std::sqrt(2.0)), 1e-12);  // down onto the ball
   ball.y = -0.1;  // behind, to the right: beyond the neck, clamped
   ball.x = -1.0;
   board.post(ball);
@@ -114,10 +118,12 @@ TEST_F(MachinesTest, MissionAdvancesThroughItsGoals) {
     pose.x = x;
     pose.y = y;
     board.post(pose);
-    for (int i = 0; i < 3; ++i) sched.run_turn(3ms);
+    for (int i = 0; i < 3; ++i) sched.run_turn(3ms);  // Drive (sees it), -> Reached, -> Drive/Done
   }
+  sched.run_turn(4ms);  // Done's OnEntry: the stop
   EXPECT_EQ(mission.current_state_name(), "Done");
-  EXPECT_EQ(mission.local_goal(), 4u);
+  EXPECT_EQ(mission.local_announced(), 4u);
+  EXPECT_TRUE(goals.complete());
   EXPECT_TRUE(board.get<wb::MotionCommand>().stop);
 }
 
