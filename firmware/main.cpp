@@ -15,6 +15,7 @@
 #include "ringlet/firmware/config.hpp"
 #include "ringlet/firmware/mission_report.hpp"
 #include "ringlet/firmware/mission_runner.hpp"
+#include "ringlet/firmware/schedule_report.hpp"
 #include "ringlet/firmware/stack.hpp"
 #include "ringlet/sim/world.hpp"
 
@@ -110,9 +111,12 @@ int main(int argc, char** argv) {
     firmware::print_summary(std::cout, summary);
     std::cout << '\n';
     executive::print_timing_table(std::cout, stack.executive());
+    std::cout << '\n';
+    firmware::print_schedule_timing(std::cout, stack.schedule());
     if (!report_path.empty()) {
       write_json(report_path, {{"mission", firmware::summary_json(summary)},
-                               {"timing", executive::timing_json(stack.executive())}});
+                               {"timing", executive::timing_json(stack.executive())},
+                               {"schedule", firmware::schedule_timing_json(stack.schedule())}});
       std::cout << "report:  " << report_path.string() << '\n';
     }
     if (!svg_path.empty()) {

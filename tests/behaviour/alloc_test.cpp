@@ -41,7 +41,7 @@ TEST(LlfsmAllocation, TurnsDoNotAllocate) {
   const std::array<Waypoint, 2> goals_xy{{{5.0, 0.0}, {0.0, 0.0}}};
   WaypointMission goals(goals_xy, 0.3, MoveToWaypointParams{});
   Mission mission(board, goals);
-  Safety safety(board);
+  Safety safety(board, 0.5, 0.8, 300);
   sched.add(tracker);
   sched.add(mission);
   sched.add(safety, 2);

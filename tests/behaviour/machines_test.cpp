@@ -39,7 +39,7 @@ struct MachinesTest : ::testing::Test {
   const std::array<Waypoint, 4> square{{{2.0, 0.0}, {2.0, 2.0}, {0.0, 2.0}, {0.0, 0.0}}};
   WaypointMission goals{square, 0.3, MoveToWaypointParams{}};
   Mission mission{board, goals};
-  Safety safety{board};
+  Safety safety{board, 0.5, 0.8, 300};  // stop, release (m), hold (ms)
 };
 
 TEST_F(MachinesTest, BallTrackerPointsTheHeadAtTheBall) {

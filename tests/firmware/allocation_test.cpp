@@ -1,6 +1,6 @@
-// The cycle allocates nothing: the full simulated stack (sense with laser ray casting, follower,
-// actuate, telemetry, executive statistics) runs N frames while every operator new in the process
-// is counted. The counter replaces the global allocation functions for this test binary only.
+// The cycle allocates nothing: the full simulated stack (sense with laser ray casting, the LLFSM
+// schedule, actuate, telemetry, whiteboard dispatch, executive statistics) runs N frames while
+// every operator new in the process is counted. The counter replaces the global allocation functions for this test binary only.
 #include <gtest/gtest.h>
 
 #include <atomic>

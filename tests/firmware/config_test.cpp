@@ -24,7 +24,7 @@ TEST(FirmwareConfig, ShippedConfigLoads) {
   const auto cfg = load_config(test::kShippedConfig);
   EXPECT_EQ(cfg.backend, "sim");
   EXPECT_EQ(cfg.executive.period, hal::Nanos{10'000'000});
-  ASSERT_EQ(cfg.tasks.size(), 4U);
+  ASSERT_EQ(cfg.tasks.size(), 5U);
   EXPECT_EQ(cfg.tasks[0].name, "sense");
   EXPECT_TRUE(std::filesystem::exists(cfg.world)) << cfg.world;
 }
@@ -78,11 +78,12 @@ INSTANTIATE_TEST_SUITE_P(
                 "rate 30 Hz does not divide the base rate 100 Hz"},
         BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 20000 },",
                 "is larger than the period"},
-        BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 9900 },", "is overloaded: budgets of sense, follow, actuate, telemetry"},
+        BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 9900 },", "is overloaded: budgets of sense, fsm, actuate, telemetry, whiteboard"},
         BadCase{"  { name = \"sense\"", "  { name = \"sense\" },", "executive.tasks[0].budget_us: every task needs a budget"},
         BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 200, policy = \"panic\" },",
                 "policy: must be one of \"warn\", \"skip\", \"degrade\", \"failsafe\""},
-        BadCase{"min_speed", "min_speed = 5.0", "follower.min_speed: must not exceed max_speed"}));
+        BadCase{"min_speed", "min_speed = 5.0", "follower.min_speed: must not exceed max_speed"},
+        BadCase{"release_range_m", "release_range_m = 0.5", "safety.release_range_m: must be larger than stop_range_m"}));
 
 TEST(FirmwareConfig, SimBackendNeedsAWorld) {
   const std::string message = error_of(with_line(shipped_config_text(), "world", "# no world"));

@@ -3,7 +3,10 @@
 // really stops the robot, and a table that does not match the firmware's tasks is refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "firmware_test_support.hpp"
 #include "ringlet/firmware/mission_report.hpp"
@@ -19,6 +22,8 @@ using test::with_line;
 
 struct Run {
   MissionSummary summary;
+  std::vector<std::string> mission_states;  // Mission's FsmStatus states, as the whiteboard saw them
+  std::string safety_state;
   std::uint64_t overruns = 0;
   std::uint64_t frame_overruns = 0;
   bool safe_state = false;
@@ -27,16 +32,23 @@ struct Run {
 Run run(const std::string& text) {
   const auto cfg = parse_as_shipped(text);
   FirmwareStack stack(cfg);
+  Run r;
+  r.mission_states.reserve(1000);
+  // Any whiteboard subscriber sees every FsmStatus (delivered at the whiteboard task's dispatch).
+  stack.whiteboard().subscribe<wb::FsmStatus>([&r](const wb::FsmStatus& status) {
+    if (status.machine.view() == "Mission") r.mission_states.emplace_back(status.state.view());
+  });
   std::atomic<bool> interrupt{false};
   std::ostringstream log;
   const auto outcome = run_mission(stack, cfg.timeout_s, interrupt, log);
-  Run r;
   r.summary = summarize(stack, outcome, stack.executive().failsafe_triggered() || outcome.watchdog_fired);
   for (const auto& st : stack.executive().task_stats()) r.overruns += st.overruns;
   r.frame_overruns = stack.executive().frame_stats().frame_overruns;
   r.safe_state = stack.robot().actuators().in_safe_state();
+  r.safety_state = std::string(stack.schedule().machine(2).current_state_name());
   return r;
 }
+
 
 // What the robot does must not depend on the speed of the build under test (qemu, sanitizers):
 // these runs warn on overruns instead of acting on them, except where the policy is the point.
@@ -55,6 +67,43 @@ TEST(FirmwareStack, ShippedMissionCompletesInLockstep) {
   EXPECT_FALSE(r.summary.safe_state);
   EXPECT_TRUE(r.safe_state) << "a clean shutdown ends in the safe state";
   EXPECT_EQ(exit_code(r.summary), 0);
+}
+
+TEST(FirmwareStack, TheThreeMachinesRunAndTheirStatusIsOnTheWhiteboard) {
+  const auto r = run(shipped());
+  ASSERT_EQ(r.summary.machines.size(), 3U);
+  EXPECT_EQ(r.summary.machines[0].name, "BallTracker");
+  EXPECT_EQ(r.summary.machines[1].name, "Mission");
+  EXPECT_EQ(r.summary.machines[1].state, "Done");
+  EXPECT_EQ(r.summary.machines[2].name, "Safety");
+  EXPECT_EQ(r.summary.machines[2].state, "Clear");
+  EXPECT_EQ(r.summary.machines[2].ringlets, 2 * r.summary.machines[0].ringlets) << "Safety runs twice a turn";
+  // Every goal reached is a Reached state change that a whiteboard subscriber received.
+  EXPECT_EQ(std::count(r.mission_states.begin(), r.mission_states.end(), "Reached"),
+            static_cast<std::ptrdiff_t>(r.summary.goal_count));
+  ASSERT_FALSE(r.mission_states.empty());
+  EXPECT_EQ(r.mission_states.front(), "Drive") << "first change after subscribing: WaitForPose -> Drive";
+  EXPECT_EQ(r.mission_states.back(), "Done");
+  EXPECT_GT(r.summary.fsm_status_seen, 2 * r.summary.goal_count);
+}
+
+TEST(FirmwareStack, TheHeadTracksTheBall) {
+  const auto r = run(shipped());
+  ASSERT_GT(r.summary.head.frames, 1000U);
+  EXPECT_GT(r.summary.head.on_target_share(), 0.95) << "head yaw within 5 degrees of the true ball";
+  EXPECT_LT(r.summary.head.mean_error(), 0.03);
+}
+
+TEST(FirmwareStack, SafetyMachineStopsTheRobotBeforeAWall) {
+  // The shipped configuration on a corridor whose only goal lies behind a wall.
+  const auto world = test::kShippedConfig.parent_path().parent_path().parent_path() / "tests/firmware/data/blocked.world";
+  auto text = with_line(shipped(), "world", "world = \"" + world.string() + "\"");
+  text = with_line(text, "timeout_s", "timeout_s = 20");
+  const auto r = run(text);
+  EXPECT_FALSE(r.summary.complete);
+  EXPECT_EQ(r.summary.collisions, 0U) << "the robot must stop before the wall";
+  EXPECT_EQ(r.safety_state, "Stopped");
+  EXPECT_GT(r.summary.distance_m, 3.0) << "it drove up the corridor first";
 }
 
 TEST(FirmwareStack, SameSeedSameTrajectoryOtherSeedOtherTrajectory) {

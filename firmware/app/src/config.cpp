@@ -251,6 +251,18 @@ FirmwareConfig parse_config(std::string_view text, const std::string& source, co
   }
   follower.reject_unknown();
 
+  Section safety = section(root, top, "safety", source);
+  cfg.safety.stop_range = safety.number("stop_range_m", 0.9, 0.05, 50.0);
+  cfg.safety.release_range = safety.number("release_range_m", 1.2, 0.05, 50.0);
+  cfg.safety.hold_ms = safety.integer("release_after_ms", 300, 0, 600000);
+  if (cfg.safety.release_range <= cfg.safety.stop_range) {
+    if (const toml::node* n = safety.find("release_range_m")) {
+      safety.fail(*n, "release_range_m", "must be larger than stop_range_m (hysteresis)");
+    }
+    safety.fail_missing("release_range_m", "must be larger than stop_range_m (hysteresis)");
+  }
+  safety.reject_unknown();
+
   Section telemetry = section(root, top, "telemetry", source);
   cfg.trajectory_every = telemetry.integer("trajectory_every", 10, 1, 100000);
   telemetry.reject_unknown();

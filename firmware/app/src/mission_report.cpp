@@ -43,6 +43,13 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
   s.safe_state = safe_before_shutdown;
   s.interrupted = outcome.interrupted;
   s.trajectory_hash = trajectory_hash(stack.telemetry().trajectory());
+  const auto& schedule = stack.schedule();
+  for (std::size_t i = 0; i < schedule.size(); ++i) {
+    const auto& m = schedule.machine(i);
+    s.machines.push_back({std::string(m.name()), std::string(m.current_state_name()), m.ringlets(), m.suspended()});
+  }
+  s.fsm_status_seen = stack.fsm_status_seen();
+  s.head = stack.telemetry().head_tracking();
   return s;
 }
 
@@ -58,11 +65,31 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
                 s.safe_state ? "yes" : "no", s.failsafe ? " (failsafe policy)" : "", s.watchdog ? " (watchdog)" : "",
                 static_cast<unsigned long long>(s.trajectory_hash));
   out << line;
+  for (const auto& m : s.machines) {
+    std::snprintf(line, sizeof line, "  machine %-12s final state %-12s ringlets %8llu%s\n", m.name.c_str(),
+                  m.state.c_str(), static_cast<unsigned long long>(m.ringlets), m.suspended ? "  (suspended)" : "");
+    out << line;
+  }
+  std::snprintf(line, sizeof line, "  FsmStatus messages delivered by whiteboard subscription: %llu\n",
+                static_cast<unsigned long long>(s.fsm_status_seen));
+  out << line;
+  if (s.head.frames > 0) {
+    std::snprintf(line, sizeof line,
+                  "  head on the ball (simulated ground truth, yaw within 5 deg): %.1f %% of %llu frames, mean error "
+                  "%.2f deg, max %.1f deg\n",
+                  100.0 * s.head.on_target_share(), static_cast<unsigned long long>(s.head.frames),
+                  hal::rad_to_deg(s.head.mean_error()), hal::rad_to_deg(s.head.max_error));
+    out << line;
+  }
 }
 
 nlohmann::json summary_json(const MissionSummary& s) {
   char hash[20];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(s.trajectory_hash));
+  nlohmann::json machines = nlohmann::json::array();
+  for (const auto& m : s.machines) {
+    machines.push_back({{"name", m.name}, {"state", m.state}, {"ringlets", m.ringlets}, {"suspended", m.suspended}});
+  }
   return {{"backend", s.backend},
           {"world", s.world},
           {"seed", s.seed},
@@ -77,7 +104,14 @@ nlohmann::json summary_json(const MissionSummary& s) {
           {"failsafe", s.failsafe},
           {"watchdog", s.watchdog},
           {"interrupted", s.interrupted},
-          {"trajectory_hash", hash}};
+          {"trajectory_hash", hash},
+          {"machines", machines},
+          {"fsm_status_seen", s.fsm_status_seen},
+          {"head_tracking",
+           {{"frames", s.head.frames},
+            {"on_target_share", s.head.on_target_share()},
+            {"mean_error_deg", hal::rad_to_deg(s.head.mean_error())},
+            {"max_error_deg", hal::rad_to_deg(s.head.max_error)}}}};
 }
 
 bool write_picture(const std::filesystem::path& path, const FirmwareStack& stack, const MissionSummary& s) {

@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <map>
+#include <string>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -49,7 +51,31 @@ class Narrator {
   }
   void drain() {
     executive::Event e;
-    while (stack_.events().pop(e)) log_ << "ringlet: " << executive::describe(e, stack_.executive()) << '\n';
+    while (stack_.events().pop(e)) {
+      log_ << "ringlet: " << executive::describe(e, stack_.executive()) << '\n';
+    }
+    wb::FsmStatus status;
+    while (stack_.fsm_status_log().pop(status)) print(status);
+  }
+
+  // The first changes of each machine (the ball tracker changes state every frame by design).
+  void print(const wb::FsmStatus& status) {
+    static constexpr std::uint64_t kShownPerMachine = 20;
+    std::uint64_t& shown = shown_[std::string(status.machine.view())];
+    if (++shown > kShownPerMachine + 1) return;
+    log_ << "ringlet: fsm " << status.machine.view() << ": ";
+    if (shown == kShownPerMachine + 1) {
+      log_ << "further changes not shown\n";
+      return;
+    }
+    if (status.previous.view().empty()) {
+      log_ << "starts in " << status.state.view();
+    } else if (status.previous.view() == status.state.view()) {
+      log_ << (status.suspended ? "suspended in " : "resumed in ") << status.state.view();
+    } else {
+      log_ << status.previous.view() << " -> " << status.state.view();
+    }
+    log_ << " (ringlet " << status.ringlets << ")\n";
   }
 
   FirmwareStack& stack_;
@@ -58,6 +84,7 @@ class Narrator {
   std::mutex mutex_;  // guards done_ only; the cycle never takes it
   std::condition_variable wake_;
   bool done_ = false;
+  std::map<std::string, std::uint64_t> shown_;  // FsmStatus lines printed per machine
   std::thread thread_;
 };
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "ringlet/behaviour/llfsm/providers.hpp"
+
 namespace ringlet::firmware {
 namespace {
 
@@ -40,23 +42,53 @@ std::size_t trajectory_capacity(const FirmwareConfig& c) {
   return static_cast<std::size_t>(std::ceil(frames / c.trajectory_every)) + 2;
 }
 
+// Deep enough that a tool polling every few milliseconds sees every FsmStatus of a frame.
+constexpr std::size_t kWhiteboardGenerations = 64;
+
 }  // namespace
 
 FirmwareStack::FirmwareStack(const FirmwareConfig& config)
     : config_(config),
       robot_(make_robot(config_)),
       sim_(dynamic_cast<const sim::SimRobot*>(robot_.get())),
+      board_(kWhiteboardGenerations),
+      fsm_status_log_(std::make_unique<FsmStatusLog>()),
       mission_(mission_goals(*robot_), config_.goal_tolerance, config_.follower),
       telemetry_(trajectory_capacity(config_), 1024, mission_.goal_count()),
-      sense_(robot_->sensors(), state_),
-      follow_(mission_, state_),
-      actuate_(robot_->actuators(), state_),
-      telemetry_task_(telemetry_, mission_, state_, config_.trajectory_every) {
+      ball_tracker_(board_),
+      mission_machine_(board_, mission_),
+      safety_(board_, config_.safety.stop_range, config_.safety.release_range, config_.safety.hold_ms),
+      fsm_bus_(board_),
+      schedule_(stopwatch_, &fsm_bus_),
+      sense_(robot_->sensors(), state_, board_, sim_),
+      fsm_(schedule_),
+      actuate_(robot_->actuators(), board_),
+      telemetry_task_(telemetry_, mission_, mission_machine_, state_, config_.trajectory_every),
+      whiteboard_task_(board_) {
+  // Schedule order is the order of the machines' writes within a turn: Safety runs last, twice,
+  // so that the turn that sees an obstacle also posts the stop that stands (safety.machine).
+  schedule_.add(ball_tracker_);
+  schedule_.add(mission_machine_);
+  schedule_.add(safety_, 2);
+  if (const auto report = behaviour::llfsm::check_providers(schedule_, kTaskProvidedTypes); !report.ok()) {
+    throw ConfigError(config_.source.string() + ": machines: " + report.describe());
+  }
+  board_.subscribe<wb::FsmStatus>([this](const wb::FsmStatus& status) {
+    ++fsm_status_seen_;
+    (void)fsm_status_log_->push(status);
+  });
+  schedule_.start();
+
   auto tasks = bind(config_.tasks,
-                    {{"sense", &sense_}, {"follow", &follow_}, {"actuate", &actuate_}, {"telemetry", &telemetry_task_}},
+                    {{"sense", &sense_},
+                     {"fsm", &fsm_},
+                     {"actuate", &actuate_},
+                     {"telemetry", &telemetry_task_},
+                     {"whiteboard", &whiteboard_task_}},
                     config_.source.string());
   executive_ = std::make_unique<executive::Executive>(config_.executive, std::move(tasks), clock(), stopwatch_,
                                                       robot_->actuators(), &events_);
+  whiteboard_task_.attach(*executive_);
 }
 
 FirmwareStack::~FirmwareStack() = default;

@@ -1,18 +1,63 @@
 #include "ringlet/firmware/tasks.hpp"
 
+#include <cmath>
+#include <limits>
+
+#include "ringlet/executive/executive.hpp"
+
 namespace ringlet::firmware {
+namespace {
 
-void SenseTask::run(const executive::TaskContext& /*ctx*/) noexcept { state_.sensors_ok = sensors_.read(state_.sensors); }
+// The nearest valid return of a scan, bearing in the robot frame (left positive, like
+// hal::RobotPoint; the laser's own angles are positive to the right).
+wb::LaserSummary summarize(const hal::LaserScan& scan) noexcept {
+  wb::LaserSummary s{};
+  s.nearest_range = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < scan.beam_count; ++i) {
+    if (!scan.valid[i]) continue;
+    ++s.valid_beams;
+    const double range = scan.range[i];
+    if (range < s.nearest_range) {
+      s.nearest_range = range;
+      s.nearest_bearing = -scan.beam_angle(i);
+    }
+  }
+  if (s.valid_beams == 0) s.nearest_range = scan.max_range;  // nothing within range
+  return s;
+}
 
-void FollowTask::run(const executive::TaskContext& /*ctx*/) noexcept {
-  if (state_.sensors_ok && state_.sensors.pose.valid) {
-    state_.command.drive = mission_.update(state_.sensors.pose.pose);
-  } else {
-    state_.command.drive = {state_.command.drive.curvature, 0.0};
+}  // namespace
+
+void SenseTask::run(const executive::TaskContext& /*ctx*/) noexcept {
+  state_.sensors_ok = sensors_.read(state_.sensors);
+  const auto& frame = state_.sensors;
+  board_.post(wb::Pose{frame.pose.pose.x, frame.pose.pose.y, frame.pose.pose.theta,
+                       state_.sensors_ok && frame.pose.valid});
+  board_.post(summarize(frame.laser));
+  if (truth_ != nullptr) {
+    state_.true_ball = truth_->true_ball_in_robot_frame();
+    wb::BallBelief ball{};
+    ball.visible = state_.true_ball.has_value();
+    if (state_.true_ball) {
+      ball.x = state_.true_ball->x;
+      ball.y = state_.true_ball->y;
+      ball.confidence = 1.0;
+    }
+    ball.simulated = true;  // ground truth, not a detection
+    board_.post(ball);
   }
 }
 
-void ActuateTask::run(const executive::TaskContext& /*ctx*/) noexcept { actuators_.write(state_.command); }
+void FsmTask::run(const executive::TaskContext& ctx) noexcept { schedule_.run_turn(ctx.now); }
+
+void ActuateTask::run(const executive::TaskContext& /*ctx*/) noexcept {
+  const auto motion = board_.get<wb::MotionCommand>();
+  const auto head = board_.get<wb::HeadCommand>();
+  hal::ActuatorCommand cmd;
+  cmd.drive = {motion.curvature, motion.stop ? 0.0 : motion.velocity};
+  cmd.head = {head.yaw, head.pitch};
+  actuators_.write(cmd);
+}
 
 void TelemetryTask::run(const executive::TaskContext& ctx) noexcept {
   const auto& pose = state_.sensors.pose.pose;
@@ -20,10 +65,26 @@ void TelemetryTask::run(const executive::TaskContext& ctx) noexcept {
   if (state_.sensors.collided && !was_colliding_) telemetry_.record_collision(pose);
   was_colliding_ = state_.sensors.collided;
   telemetry_.record_goal(mission_.goals_reached(), state_.sensors.stamp);
-  if (mission_.complete()) {
+  if (state_.true_ball) telemetry_.record_head(state_.sensors.head, *state_.true_ball, ctx.frame_start);
+  if (machine_.current_state() == behaviour::machines::Mission::kStateDone) {
     telemetry_.record_pose(pose);  // end the trajectory where the mission ended
     ctx.request_stop();
   }
+}
+
+void WhiteboardTask::run(const executive::TaskContext& ctx) noexcept {
+  board_.dispatch();
+  const auto per_second = static_cast<std::uint64_t>(std::chrono::seconds{1} / ctx.period);
+  if (executive_ == nullptr || per_second == 0 || ctx.frame % per_second != 0) return;
+  wb::ExecutiveTiming t{};
+  const auto& frames = executive_->frame_stats();
+  t.frames = frames.frames;
+  t.frame_overruns = frames.frame_overruns;
+  t.slips = frames.slips;
+  const auto stats = executive_->task_stats();
+  t.task_count = static_cast<std::uint16_t>(std::min(stats.size(), t.task_worst_ns.size()));
+  for (std::size_t i = 0; i < t.task_count; ++i) t.task_worst_ns[i] = stats[i].wall.max().count();
+  board_.post(t);
 }
 
 }  // namespace ringlet::firmware

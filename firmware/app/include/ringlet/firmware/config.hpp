@@ -22,6 +22,15 @@ class ConfigError : public std::runtime_error {
 
 enum class ClockMode { kLockstep, kRealtime };
 
+/// The Safety machine's thresholds ([safety]). Stopping from max_speed takes
+/// max_speed² / (2 · max_acceleration) plus one period; stop_range_m must cover that plus the
+/// robot's radius, or the robot touches what it stopped for.
+struct SafetyParams {
+  double stop_range = 0.9;     // m
+  double release_range = 1.2;  // m
+  long hold_ms = 300;          // ms clear before driving on
+};
+
 struct FirmwareConfig {
   std::filesystem::path source;     // the file it came from
   std::string backend = "sim";      // robot.backend
@@ -34,6 +43,7 @@ struct FirmwareConfig {
   executive::ExecutiveConfig executive{};
   executive::RealtimeSettings realtime{};
   std::vector<executive::TaskSpec> tasks;
+  SafetyParams safety{};
   int trajectory_every = 10;        // telemetry.trajectory_every: frames between samples
 };
 

@@ -1,8 +1,10 @@
 #pragma once
-// What the firmware's tasks hand each other within a frame: this cycle's sensor reading and the
-// command to apply. Owned by the stack, written by one task, read by the ones after it in the
-// table. (The typed whiteboard replaces this struct when the LLFSMs arrive.)
-#include "ringlet/hal/actuators.hpp"
+// What the firmware's own tasks keep of one frame besides the whiteboard: the raw sensor reading
+// (telemetry records it) and, on the simulated robot, the ground truth that scores the run. The
+// algorithms (the LLFSMs) never see this: they read and write the whiteboard only.
+#include <optional>
+
+#include "ringlet/hal/geometry.hpp"
 #include "ringlet/hal/sensors.hpp"
 
 namespace ringlet::firmware {
@@ -10,7 +12,7 @@ namespace ringlet::firmware {
 struct CycleState {
   hal::SensorFrame sensors{};
   bool sensors_ok = false;
-  hal::ActuatorCommand command{};
+  std::optional<hal::RobotPoint> true_ball;  // simulator ground truth (sim backend only)
 };
 
 }  // namespace ringlet::firmware

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -11,6 +12,14 @@
 #include "ringlet/firmware/stack.hpp"
 
 namespace ringlet::firmware {
+
+/// One LLFSM at the end of the run.
+struct MachineSummary {
+  std::string name;
+  std::string state;
+  std::uint64_t ringlets = 0;
+  bool suspended = false;
+};
 
 struct MissionSummary {
   std::string backend;
@@ -28,6 +37,9 @@ struct MissionSummary {
   bool watchdog = false;
   bool interrupted = false;
   std::uint64_t trajectory_hash = 0;  // FNV-1a over the recorded poses: equal hashes, equal runs
+  std::vector<MachineSummary> machines;
+  std::uint64_t fsm_status_seen = 0;  // FsmStatus delivered by the stack's whiteboard subscription
+  HeadTracking head{};                // sim only: measured head yaw against the true ball
 };
 
 [[nodiscard]] MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, bool safe_before_shutdown);

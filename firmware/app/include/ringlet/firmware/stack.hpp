@@ -1,14 +1,21 @@
 #pragma once
 // The whole controller for one configuration: the backend chosen by robot.backend, the clocks,
-// the tasks and the executive with its table. Everything is allocated here, at start-up; running
+// the whiteboard, the LLFSM schedule (BallTracker, Mission, Safety), the tasks and the executive
+// with its table. Everything is allocated here, at start-up; running
 // it allocates nothing. The binary, the tests and the tools all build the controller this way.
 #include <cstdint>
 #include <memory>
 #include <optional>
 
+#include "ringlet/behaviour/llfsm/schedule.hpp"
+#include "ringlet/behaviour/llfsm/whiteboard_bus.hpp"
+#include "ringlet/behaviour/machines/ball_tracker.hpp"
+#include "ringlet/behaviour/machines/mission.hpp"
+#include "ringlet/behaviour/machines/safety.hpp"
 #include "ringlet/behaviour/waypoint_mission.hpp"
 #include "ringlet/executive/event_log.hpp"
 #include "ringlet/executive/executive.hpp"
+#include "ringlet/executive/spsc_queue.hpp"
 #include "ringlet/firmware/config.hpp"
 #include "ringlet/firmware/cycle_state.hpp"
 #include "ringlet/firmware/tasks.hpp"
@@ -16,6 +23,7 @@
 #include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/hal/virtual_clock.hpp"
 #include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/whiteboard/whiteboard.hpp"
 
 namespace ringlet::firmware {
 
@@ -36,6 +44,13 @@ class FirmwareStack {
   [[nodiscard]] executive::EventLog& events() noexcept { return events_; }
   [[nodiscard]] const Telemetry& telemetry() const noexcept { return telemetry_; }
   [[nodiscard]] const behaviour::WaypointMission& mission() const noexcept { return mission_; }
+  [[nodiscard]] wb::Whiteboard& whiteboard() noexcept { return board_; }
+  [[nodiscard]] const behaviour::llfsm::Schedule& schedule() const noexcept { return schedule_; }
+  /// Every FsmStatus posted, delivered by a whiteboard subscription at the whiteboard task's
+  /// dispatch and queued here for the log drain (full: dropped and counted).
+  using FsmStatusLog = executive::SpscQueue<wb::FsmStatus, 4096>;
+  [[nodiscard]] FsmStatusLog& fsm_status_log() noexcept { return *fsm_status_log_; }
+  [[nodiscard]] std::uint64_t fsm_status_seen() const noexcept { return fsm_status_seen_; }
   /// The simulated robot when robot.backend is "sim", else null.
   [[nodiscard]] const sim::SimRobot* sim_robot() const noexcept { return sim_; }
 
@@ -50,19 +65,31 @@ class FirmwareStack {
   hal::MonotonicClock monotonic_clock_;
   hal::ThreadStopwatch stopwatch_;
   executive::EventLog events_;
+  wb::Whiteboard board_;
+  std::unique_ptr<FsmStatusLog> fsm_status_log_;
+  std::uint64_t fsm_status_seen_ = 0;
   CycleState state_;
   behaviour::WaypointMission mission_;
   Telemetry telemetry_;
+  behaviour::machines::BallTracker ball_tracker_;
+  behaviour::machines::Mission mission_machine_;
+  behaviour::machines::Safety safety_;
+  behaviour::llfsm::WhiteboardFsmBus fsm_bus_;
+  behaviour::llfsm::Schedule schedule_;
   SenseTask sense_;
-  FollowTask follow_;
+  FsmTask fsm_;
   ActuateTask actuate_;
   TelemetryTask telemetry_task_;
+  WhiteboardTask whiteboard_task_;
   std::unique_ptr<executive::Executive> executive_;
 };
 
 /// The backend named by config.backend. "sim" loads config.world; "can" is refused with a
 /// ConfigError until the SocketCAN backend exists.
 [[nodiscard]] std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config);
+
+/// Whiteboard types the firmware's tasks (not machines) provide: sense posts them.
+inline constexpr std::string_view kTaskProvidedTypes[] = {"Pose", "LaserSummary", "BallBelief"};
 
 /// The world's goals as the behaviour layer's waypoints (empty for real backends).
 [[nodiscard]] std::vector<behaviour::Waypoint> mission_goals(const hal::Robot& robot);

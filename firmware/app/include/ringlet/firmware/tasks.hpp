@@ -1,63 +1,96 @@
 #pragma once
-// The firmware's tasks for now: sense → follow → actuate → telemetry, each a small adapter
-// between the executive and one piece of work. They share data only through CycleState.
+// The firmware's tasks, one executive task each, in table order:
+//   sense → fsm → actuate → telemetry → whiteboard
+// Each is a small adapter between the executive and one piece of work. Algorithms talk only
+// through the whiteboard; sense writes it from the HAL, actuate reads it back out to the HAL.
+#include "ringlet/behaviour/llfsm/schedule.hpp"
+#include "ringlet/behaviour/machines/mission.hpp"
 #include "ringlet/behaviour/waypoint_mission.hpp"
 #include "ringlet/executive/task.hpp"
 #include "ringlet/firmware/cycle_state.hpp"
 #include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/hal/robot.hpp"
+#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/whiteboard/whiteboard.hpp"
+
+namespace ringlet::executive {
+class Executive;
+}
 
 namespace ringlet::firmware {
 
-/// HAL sensors → CycleState. On the simulated robot this is also what advances the world.
+/// HAL sensors → CycleState and the whiteboard (Pose, LaserSummary). On the simulated robot this
+/// is also what advances the world, and — until vision detects the ball — it posts the
+/// simulator's true ball as the BallBelief, marked `simulated`.
 class SenseTask final : public executive::Task {
  public:
-  SenseTask(hal::Sensors& sensors, CycleState& state) noexcept : sensors_(sensors), state_(state) {}
+  SenseTask(hal::Sensors& sensors, CycleState& state, wb::Whiteboard& board, const sim::SimRobot* truth) noexcept
+      : sensors_(sensors), state_(state), board_(board), truth_(truth) {}
   void run(const executive::TaskContext& ctx) noexcept override;
 
  private:
   hal::Sensors& sensors_;
   CycleState& state_;
+  wb::Whiteboard& board_;
+  const sim::SimRobot* truth_;
 };
 
-/// The waypoint follower: pose → u = (kappa, v) through the mission's goal sequence. Without a
-/// valid pose it commands a stop rather than steering blind.
-class FollowTask final : public executive::Task {
+/// The LLFSM schedule: one turn of every machine per activation, on the executive's clock.
+class FsmTask final : public executive::Task {
  public:
-  FollowTask(behaviour::WaypointMission& mission, CycleState& state) noexcept : mission_(mission), state_(state) {}
+  explicit FsmTask(behaviour::llfsm::Schedule& schedule) noexcept : schedule_(schedule) {}
   void run(const executive::TaskContext& ctx) noexcept override;
 
  private:
-  behaviour::WaypointMission& mission_;
-  CycleState& state_;
+  behaviour::llfsm::Schedule& schedule_;
 };
 
-/// CycleState command → HAL actuators.
+/// Whiteboard MotionCommand and HeadCommand → HAL actuators. `stop` means v = 0.
 class ActuateTask final : public executive::Task {
  public:
-  ActuateTask(hal::Actuators& actuators, CycleState& state) noexcept : actuators_(actuators), state_(state) {}
+  ActuateTask(hal::Actuators& actuators, const wb::Whiteboard& board) noexcept
+      : actuators_(actuators), board_(board) {}
   void run(const executive::TaskContext& ctx) noexcept override;
 
  private:
   hal::Actuators& actuators_;
-  CycleState& state_;
+  const wb::Whiteboard& board_;
 };
 
-/// Records the run (trajectory every `every_frames`, collision events, goal times) and ends the
-/// run once the mission is complete.
+/// Records the run (trajectory every `every_frames`, collision events, goal times, how well the
+/// head follows the ball) and ends the run once the Mission machine is Done.
 class TelemetryTask final : public executive::Task {
  public:
-  TelemetryTask(Telemetry& telemetry, const behaviour::WaypointMission& mission, const CycleState& state,
-                int every_frames) noexcept
-      : telemetry_(telemetry), mission_(mission), state_(state), every_(static_cast<std::uint64_t>(every_frames)) {}
+  TelemetryTask(Telemetry& telemetry, const behaviour::WaypointMission& mission,
+                const behaviour::machines::Mission& machine, const CycleState& state, int every_frames) noexcept
+      : telemetry_(telemetry),
+        mission_(mission),
+        machine_(machine),
+        state_(state),
+        every_(static_cast<std::uint64_t>(every_frames)) {}
   void run(const executive::TaskContext& ctx) noexcept override;
 
  private:
   Telemetry& telemetry_;
   const behaviour::WaypointMission& mission_;
+  const behaviour::machines::Mission& machine_;
   const CycleState& state_;
   std::uint64_t every_;
   bool was_colliding_ = false;
+};
+
+/// The cycle's one defined point for whiteboard subscriptions (dispatch, in type-id order), and
+/// once a second the executive's counters as ExecutiveTiming.
+class WhiteboardTask final : public executive::Task {
+ public:
+  explicit WhiteboardTask(wb::Whiteboard& board) noexcept : board_(board) {}
+  /// The executive is built after its tasks; the stack attaches it before the first frame.
+  void attach(const executive::Executive& executive) noexcept { executive_ = &executive; }
+  void run(const executive::TaskContext& ctx) noexcept override;
+
+ private:
+  wb::Whiteboard& board_;
+  const executive::Executive* executive_ = nullptr;
 };
 
 }  // namespace ringlet::firmware

@@ -1,11 +1,10 @@
 #pragma once
 // Events from the cycle (overruns, failsafe, watchdog) go through a fixed single-producer /
-// single-consumer ring so that the cycle never blocks on I/O: a non-real-time thread drains and
-// prints them. If the ring is full the event is dropped and counted, never waited for.
-#include <array>
-#include <atomic>
+// single-consumer ring (spsc_queue.hpp) so that the cycle never blocks on I/O: a non-real-time
+// thread drains and prints them.
 #include <cstdint>
 
+#include "ringlet/executive/spsc_queue.hpp"
 #include "ringlet/executive/task_table.hpp"
 
 namespace ringlet::executive {
@@ -22,21 +21,7 @@ struct Event {
   int level = 0;                 // degrade level
 };
 
-class EventLog {
- public:
-  static constexpr std::size_t kCapacity = 256;
-
-  /// Producer side: the cycle thread only.
-  bool push(const Event& e) noexcept;
-  /// Consumer side. Returns false when empty.
-  bool pop(Event& out) noexcept;
-  [[nodiscard]] std::uint64_t dropped() const noexcept { return dropped_.load(std::memory_order_relaxed); }
-
- private:
-  std::array<Event, kCapacity> ring_{};
-  std::atomic<std::uint64_t> head_{0};  // next write
-  std::atomic<std::uint64_t> tail_{0};  // next read
-  std::atomic<std::uint64_t> dropped_{0};
-};
+/// The executive's events on their way to the log drain (256 deep).
+using EventLog = SpscQueue<Event, 256>;
 
 }  // namespace ringlet::executive
