@@ -181,6 +181,18 @@ def block_end(text, start):
 
 # --- parsing ------------------------------------------------------------------------------------
 
+# Variable declarations: keyword -> (kind, pattern with groups name, type[, access|init], what to
+# say when a line does not match).
+DECLARATIONS = {
+    "external": ("external", r"external\s+(" + IDENT + r")\s*:\s*(" + IDENT + r"(?:::" + IDENT + r")*)\s+(\S+)",
+                 "'external <name> : <WhiteboardType> read|write|readwrite'"),
+    "local": ("local", r"local\s+(" + IDENT + r")\s*:\s*([^=]+?)\s*=\s*(.+)",
+              "'local <name> : <C++ type> = <initial value>'"),
+    "parameter": ("parameter", r"parameter\s+(" + IDENT + r")\s*:\s*([^=]+?)",
+                  "'parameter <name> : <C++ type>' (no initial value: it is bound at construction)"),
+}
+
+
 def parse(text, errors):
     model = Model()
     lines = text.split("\n")
@@ -214,37 +226,22 @@ def parse(text, errors):
                 errors.add(lineno, "expected 'include <header>' or 'include \"header\"' outside states")
             else:
                 model.includes.append(m.group(1))
-        elif word == "external":
+        elif word in DECLARATIONS:
+            kind, pattern, usage = DECLARATIONS[word]
             if state is not None:
-                errors.add(lineno, "external variables are declared outside states")
+                errors.add(lineno, f"{kind} variables are declared outside states")
                 continue
-            m = re.fullmatch(r"external\s+(" + IDENT + r")\s*:\s*(" + IDENT + r"(?:::" + IDENT + r")*)\s+(\S+)", line)
+            m = re.fullmatch(pattern, line)
             if not m:
-                errors.add(lineno, "expected 'external <name> : <WhiteboardType> read|write|readwrite'")
+                errors.add(lineno, f"expected {usage}")
                 continue
-            name, ctype, access = m.groups()
-            if access not in ACCESS:
-                errors.add(lineno, f"unknown access mode '{access}' for external '{name}' (expected read, write or readwrite)")
+            name, ctype, extra = m.group(1), m.group(2), m.group(3) if m.lastindex >= 3 else None
+            if kind == "external" and extra not in ACCESS:
+                errors.add(lineno, f"unknown access mode '{extra}' for external '{name}' (expected read, write or readwrite)")
                 continue
-            declare(model, Var("external", name, ctype, lineno, access=access), errors)
-        elif word == "local":
-            if state is not None:
-                errors.add(lineno, "local variables are declared outside states")
-                continue
-            m = re.fullmatch(r"local\s+(" + IDENT + r")\s*:\s*([^=]+?)\s*=\s*(.+)", line)
-            if not m:
-                errors.add(lineno, "expected 'local <name> : <C++ type> = <initial value>'")
-                continue
-            declare(model, Var("local", m.group(1), m.group(2), lineno, init=m.group(3)), errors)
-        elif word == "parameter":
-            if state is not None:
-                errors.add(lineno, "parameters are declared outside states")
-                continue
-            m = re.fullmatch(r"parameter\s+(" + IDENT + r")\s*:\s*([^=]+?)", line)
-            if not m:
-                errors.add(lineno, "expected 'parameter <name> : <C++ type>' (no initial value: it is bound at construction)")
-                continue
-            declare(model, Var("parameter", m.group(1), m.group(2), lineno), errors)
+            declare(model, Var(kind, name, ctype, lineno,
+                               access=extra if kind == "external" else None,
+                               init=extra if kind == "local" else None), errors)
         elif word == "state":
             m = re.fullmatch(r"state\s+(" + IDENT + r")(\s+initial)?", line)
             if state is not None:

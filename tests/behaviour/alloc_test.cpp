@@ -54,7 +54,7 @@ TEST(LlfsmAllocation, TurnsDoNotAllocate) {
   laser.valid_beams = 10;
   wb::BallBelief ball{};
   wb::FsmControl control{};
-  control.machine.assign("BallTracker");  // operator=(const char*) is ambiguous in FixedString
+  control.machine = "BallTracker";
   for (int turn = 0; turn < 2000; ++turn) {
     laser.nearest_range = (turn / 100) % 2 == 0 ? 2.0 : 0.3;  // stop, release, stop, ...
     ball.visible = turn % 3 != 0;

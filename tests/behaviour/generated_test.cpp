@@ -132,17 +132,17 @@ TEST_F(GeneratedTest, StatusIsPostedAndFsmControlSuspendsByName) {
   EXPECT_EQ(st.ringlets, 1u);
 
   wb::FsmControl c{};
-  c.machine.assign("Echo");  // operator=(const char*) is ambiguous in FixedString
+  c.machine = "Echo";
   c.command = wb::FsmCommand::kSuspend;
   board.post(c);
-  c.machine.assign("Nobody");  // operator=(const char*) is ambiguous in FixedString
+  c.machine = "Nobody";
   board.post(c);
   sched.run_turn(1ms);
   EXPECT_TRUE(echo.suspended());
   EXPECT_TRUE(board.get<wb::FsmStatus>().suspended);
   EXPECT_EQ(bus.unknown_machines(), 1u);
   // Several in one turn: restart beats suspend, whatever the order.
-  c.machine.assign("Echo");  // operator=(const char*) is ambiguous in FixedString
+  c.machine = "Echo";
   c.command = wb::FsmCommand::kRestart;
   board.post(c);
   c.command = wb::FsmCommand::kSuspend;
@@ -159,7 +159,7 @@ TEST_F(GeneratedTest, FsmControlGenerationsLostToTheRingAreCounted) {
   Echo echo(small);
   sched.add(echo);
   wb::FsmControl c{};
-  c.machine.assign("Echo");  // operator=(const char*) is ambiguous in FixedString
+  c.machine = "Echo";
   c.command = wb::FsmCommand::kResume;
   for (int i = 0; i < 5; ++i) small.post(c);
   c.command = wb::FsmCommand::kSuspend;

@@ -57,14 +57,7 @@ Status Whiteboard::post_text(std::string_view type_name, std::string_view text) 
   Status status = Error{"whiteboard: no message type named \"" + std::string{type_name} + "\""};
   for_each_type([&](auto type) {
     using T = typename decltype(type)::type;
-    if (T::kName != type_name) return;
-    Result<T> msg = T::from_string(text);
-    if (!msg) {
-      status = Error{msg.error()};
-      return;
-    }
-    post(*msg);
-    status = Status{};
+    if (T::kName == type_name) status = post_result(T::from_string(text));
   });
   return status;
 }
@@ -81,18 +74,10 @@ Result<std::string> Whiteboard::describe_newest(std::string_view type_name) cons
 Status Whiteboard::post_binary(std::span<const std::byte> bytes) {
   Result<WireHeader> header = peek_header(bytes);
   if (!header) return Error{header.error()};
-  Status status = Error{"whiteboard: unknown type id " +
-                        std::to_string(to_underlying(header->id))};
+  Status status = Error{"whiteboard: unknown type id " + std::to_string(to_underlying(header->id))};
   for_each_type([&](auto type) {
     using T = typename decltype(type)::type;
-    if (T::kId != header->id) return;
-    Result<T> msg = decode<T>(bytes);
-    if (!msg) {
-      status = Error{msg.error()};
-      return;
-    }
-    post(*msg);
-    status = Status{};
+    if (T::kId == header->id) status = post_result(decode<T>(bytes));
   });
   return status;
 }

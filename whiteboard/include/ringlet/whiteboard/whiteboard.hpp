@@ -189,6 +189,14 @@ class Whiteboard {
     }
   }
 
+  /// Posts a parsed or decoded message, or passes its error on (posting nothing).
+  template <class T>
+  Status post_result(const Result<T>& msg) {
+    if (!msg) return Error{msg.error()};
+    post(*msg);
+    return Status{};
+  }
+
   void check_can_subscribe() const;
   void deliver_tool_subscriptions() noexcept;
   friend class ToolThread;
