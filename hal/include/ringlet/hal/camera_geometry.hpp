@@ -1,0 +1,78 @@
+#pragma once
+// Where the head camera looks: a pinhole camera on a pan-tilt head, shared by everything that maps
+// pixels to the world and back (the simulated camera renders with it, vision projects with it).
+//
+// Frames:
+//   robot  — x ahead, y left, z up; origin on the ground under the robot's centre (RobotPoint).
+//   head   — the robot frame turned by yaw about z (left positive), then by pitch about the
+//            turned y axis (positive looks down, as hal::HeadJoints).
+//   camera — OpenCV's: x right, y down, z along the optical axis (= head x).
+// Pixels: u = fx·X/Z + cx to the right, v = fy·Y/Z + cy downwards, (0, 0) the top-left corner of
+// the top-left pixel.
+#include <array>
+#include <optional>
+
+#include "ringlet/hal/geometry.hpp"
+#include "ringlet/hal/sensors.hpp"
+
+namespace ringlet::hal {
+
+struct Vec3 {
+  double x = 0.0;
+  double y = 0.0;
+  double z = 0.0;
+};
+
+struct Pixel {
+  double u = 0.0;
+  double v = 0.0;
+};
+
+struct CameraIntrinsics {
+  int width = 640;
+  int height = 480;
+  double fx = 0.0;
+  double fy = 0.0;
+  double cx = 0.0;
+  double cy = 0.0;
+
+  /// fx and fy from the two fields of view (degrees); principal point at the image centre.
+  [[nodiscard]] static CameraIntrinsics from_fov(int width, int height, double hfov_deg, double vfov_deg) noexcept;
+  /// The NAO's head camera: 640×480, about 57° × 44°.
+  [[nodiscard]] static CameraIntrinsics nao() noexcept { return from_fov(640, 480, 57.0, 44.0); }
+};
+
+/// Where the camera sits on the head: the pan-tilt pivot's height above the ground, and the
+/// camera's offset from the pivot in the head frame (ahead, up).
+struct CameraMount {
+  double pivot_height = 0.45;  // m
+  double forward = 0.05;       // m
+  double up = 0.06;            // m
+};
+
+/// The camera for one head posture: its position and axes, in the robot frame.
+struct CameraPose {
+  Vec3 position{};
+  std::array<Vec3, 3> axes{};  // camera x (right), y (down), z (optical axis), as robot vectors
+
+  [[nodiscard]] static CameraPose from_head(const CameraMount& mount, const HeadJoints& head) noexcept;
+
+  /// A robot-frame point in camera coordinates.
+  [[nodiscard]] Vec3 to_camera(const Vec3& robot) const noexcept;
+  /// A camera-frame direction as a robot-frame direction.
+  [[nodiscard]] Vec3 to_robot_direction(const Vec3& camera) const noexcept;
+};
+
+/// The pixel a robot-frame point projects to; none when it lies behind (or on) the camera plane.
+/// The pixel may be outside the image.
+[[nodiscard]] std::optional<Pixel> project(const CameraIntrinsics& k, const CameraPose& pose, const Vec3& robot) noexcept;
+
+/// Where the viewing ray through pixel (u, v) meets the ground (z = 0); none at or above the
+/// horizon.
+[[nodiscard]] std::optional<RobotPoint> pixel_to_ground(const CameraIntrinsics& k, const CameraPose& pose,
+                                                        const Pixel& px) noexcept;
+
+/// The robot-frame direction of the viewing ray through pixel (u, v) (not normalised).
+[[nodiscard]] Vec3 pixel_ray(const CameraIntrinsics& k, const CameraPose& pose, const Pixel& px) noexcept;
+
+}  // namespace ringlet::hal

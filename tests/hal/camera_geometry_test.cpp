@@ -1,0 +1,94 @@
+// The head camera's geometry against hand-computed cases: projection, its inverse onto the ground,
+// head yaw and pitch, the mount offsets, the horizon.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "ringlet/hal/camera_geometry.hpp"
+
+namespace ringlet::hal {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// A camera exactly at the pivot, 0.5 m above the ground.
+constexpr CameraMount kBare{0.5, 0.0, 0.0};
+
+TEST(CameraIntrinsics, NaoFieldOfView) {
+  const auto k = CameraIntrinsics::nao();
+  EXPECT_EQ(k.width, 640);
+  EXPECT_EQ(k.height, 480);
+  EXPECT_DOUBLE_EQ(k.cx, 320.0);
+  EXPECT_DOUBLE_EQ(k.cy, 240.0);
+  EXPECT_NEAR(k.fx, 320.0 / std::tan(deg_to_rad(28.5)), 1e-9);  // ~589.3
+  EXPECT_NEAR(k.fy, 240.0 / std::tan(deg_to_rad(22.0)), 1e-9);  // ~594.0
+}
+
+TEST(CameraGeometry, LevelCameraProjectsGroundPointsBelowTheCentre) {
+  const auto k = CameraIntrinsics::nao();
+  const auto pose = CameraPose::from_head(kBare, {0.0, 0.0});
+  // 2 m ahead on the ground: 0.5 m below the axis at depth 2.
+  const auto ahead = project(k, pose, {2.0, 0.0, 0.0});
+  ASSERT_TRUE(ahead);
+  EXPECT_NEAR(ahead->u, 320.0, 1e-9);
+  EXPECT_NEAR(ahead->v, 240.0 + k.fy * 0.25, 1e-9);
+  // 1 m to the left: left of the centre column.
+  const auto left = project(k, pose, {2.0, 1.0, 0.0});
+  ASSERT_TRUE(left);
+  EXPECT_NEAR(left->u, 320.0 - k.fx * 0.5, 1e-9);
+  // Behind the camera: no pixel.
+  EXPECT_FALSE(project(k, pose, {-1.0, 0.0, 0.0}));
+}
+
+TEST(CameraGeometry, PixelToGroundInvertsProjection) {
+  const auto k = CameraIntrinsics::nao();
+  const CameraMount mount{};  // with the default offsets
+  const auto pose = CameraPose::from_head(mount, {0.3, 0.4});
+  for (const RobotPoint p : {RobotPoint{1.0, 0.2}, RobotPoint{2.5, 1.5}, RobotPoint{0.7, 0.5}}) {
+    const auto px = project(k, pose, {p.x, p.y, 0.0});
+    ASSERT_TRUE(px);
+    const auto back = pixel_to_ground(k, pose, *px);
+    ASSERT_TRUE(back);
+    EXPECT_NEAR(back->x, p.x, 1e-9);
+    EXPECT_NEAR(back->y, p.y, 1e-9);
+  }
+}
+
+TEST(CameraGeometry, PositivePitchLooksDown) {
+  const auto k = CameraIntrinsics::nao();
+  const CameraMount mount{0.45, 0.05, 0.06};
+  // Straight down: the head's x axis points at the ground, its z axis forward, so the camera sits
+  // 0.06 m ahead of the pivot and 0.05 m below it, and the centre pixel sees the ground under it.
+  const auto pose = CameraPose::from_head(mount, {0.0, kPi / 2.0});
+  EXPECT_NEAR(pose.position.x, 0.06, 1e-12);
+  EXPECT_NEAR(pose.position.z, 0.40, 1e-12);
+  const auto centre = pixel_to_ground(k, pose, {320.0, 240.0});
+  ASSERT_TRUE(centre);
+  EXPECT_NEAR(centre->x, 0.06, 1e-12);
+  EXPECT_NEAR(centre->y, 0.0, 1e-12);
+  // Image up is robot ahead when looking down: a row above the centre sees further ahead.
+  const auto above = pixel_to_ground(k, pose, {320.0, 140.0});
+  ASSERT_TRUE(above);
+  EXPECT_NEAR(above->x, 0.06 + 0.40 * 100.0 / k.fy, 1e-12);
+}
+
+TEST(CameraGeometry, YawLeftLooksLeft) {
+  const auto k = CameraIntrinsics::nao();
+  const auto pose = CameraPose::from_head(kBare, {kPi / 2.0, 0.0});
+  const auto px = project(k, pose, {0.0, 2.0, 0.0});  // 2 m to the left
+  ASSERT_TRUE(px);
+  EXPECT_NEAR(px->u, 320.0, 1e-9);
+  EXPECT_NEAR(px->v, 240.0 + k.fy * 0.25, 1e-9);
+}
+
+TEST(CameraGeometry, NothingAtOrAboveTheHorizonMeetsTheGround) {
+  const auto k = CameraIntrinsics::nao();
+  const auto pose = CameraPose::from_head(kBare, {0.0, 0.0});
+  EXPECT_FALSE(pixel_to_ground(k, pose, {320.0, 240.0}));  // the optical axis is level
+  EXPECT_FALSE(pixel_to_ground(k, pose, {100.0, 10.0}));   // above it
+  EXPECT_TRUE(pixel_to_ground(k, pose, {100.0, 300.0}));
+}
+
+}  // namespace
+}  // namespace ringlet::hal
