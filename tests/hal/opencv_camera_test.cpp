@@ -1,0 +1,141 @@
+// The OpenCV camera backend on replays (no camera devices exist on these machines): image folders
+// are delivered frame by frame, in order, converted to YUYV or BGR exactly; bad sources fail with
+// the source named.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "ringlet/hal/monotonic_clock.hpp"
+#include "ringlet/hal/opencv_camera.hpp"
+#include "ringlet/hal/yuv.hpp"
+
+namespace ringlet::hal {
+namespace {
+
+namespace fs = std::filesystem;
+
+class TempDir {
+ public:
+  TempDir() : path_(fs::temp_directory_path() / ("ringlet-camera-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++))) {
+    fs::create_directories(path_);
+  }
+  ~TempDir() { fs::remove_all(path_); }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  [[nodiscard]] const fs::path& path() const { return path_; }
+
+ private:
+  static inline int counter_ = 0;
+  fs::path path_;
+};
+
+// Frame i: a gradient whose blue channel encodes i, so frames and pixels are told apart.
+cv::Mat frame(int i, int width = 64, int height = 48) {
+  cv::Mat m(height, width, CV_8UC3);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      m.at<cv::Vec3b>(y, x) = cv::Vec3b(static_cast<std::uint8_t>(40 * i + 10), static_cast<std::uint8_t>(3 * x),
+                                        static_cast<std::uint8_t>(5 * y));
+    }
+  }
+  return m;
+}
+
+void write_frames(const fs::path& dir, int count, int width = 64, int height = 48) {
+  for (int i = 0; i < count; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", i);
+    ASSERT_TRUE(cv::imwrite((dir / name).string(), frame(i, width, height)));
+  }
+}
+
+// Grabs until a frame with a sequence other than `last` arrives (bounded wait).
+bool grab_next(OpenCvCamera& camera, FrameView& view, std::uint64_t last, bool first) {
+  for (int i = 0; i < 2000; ++i) {
+    if (camera.grab_latest(view) && (first || view.sequence != last)) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return false;
+}
+
+TEST(OpenCvCamera, ImageFolderReplaysEveryFrameInOrderAsBgr) {
+  TempDir dir;
+  write_frames(dir.path(), 4);
+  MonotonicClock clock;
+  OpenCvCamera camera({dir.path().string(), 64, 48, 30.0, PixelFormat::kBgr8}, clock);
+  FrameView view;
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_TRUE(grab_next(camera, view, view.sequence, i == 0)) << "frame " << i;
+    EXPECT_EQ(view.sequence, static_cast<std::uint64_t>(i));
+    EXPECT_EQ(view.format, PixelFormat::kBgr8);
+    EXPECT_EQ(view.stride, 64 * 3);
+    const cv::Mat expected = frame(i);
+    EXPECT_EQ(std::memcmp(view.data, expected.data, 64 * 48 * 3), 0) << "frame " << i;
+  }
+  for (int i = 0; i < 1000 && !camera.finished(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_TRUE(camera.finished());
+  EXPECT_EQ(camera.error(), "");
+}
+
+TEST(OpenCvCamera, YuyvIsTheSharedBt601Conversion) {
+  TempDir dir;
+  write_frames(dir.path(), 1);
+  MonotonicClock clock;
+  OpenCvCamera camera({dir.path().string(), 64, 48, 30.0, PixelFormat::kYuyv}, clock);
+  FrameView view;
+  ASSERT_TRUE(grab_next(camera, view, 0, true));
+  EXPECT_EQ(view.stride, 64 * 2);
+  const cv::Mat bgr = frame(0);
+  for (int y = 0; y < 48; y += 7) {
+    std::vector<std::uint8_t> row(64 * 2);
+    bgr_row_to_yuyv(bgr.ptr<std::uint8_t>(y), row.data(), 64);
+    EXPECT_EQ(std::memcmp(view.data + y * view.stride, row.data(), row.size()), 0) << "row " << y;
+  }
+  // And the conversion itself: white, black and pure red under BT.601 full range.
+  EXPECT_EQ(bgr_to_yuv(255, 255, 255).y, 255);
+  EXPECT_EQ(bgr_to_yuv(255, 255, 255).u, 128);
+  EXPECT_EQ(bgr_to_yuv(0, 0, 0).y, 0);
+  EXPECT_EQ(bgr_to_yuv(0, 0, 255).y, 76);   // 0.299 * 255
+  EXPECT_EQ(bgr_to_yuv(0, 0, 255).v, 255);  // 128 + 0.5 * 255, clamped
+}
+
+TEST(OpenCvCamera, BadSourcesAreRefusedByName) {
+  MonotonicClock clock;
+  TempDir empty;
+  try {
+    OpenCvCamera camera({empty.path().string()}, clock);
+    FAIL() << "no error";
+  } catch (const CameraError& e) {
+    EXPECT_NE(std::string(e.what()).find(empty.path().string() + ": no .png, .jpg or .jpeg images"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(OpenCvCamera({"/nonexistent/video.mp4"}, clock), CameraError);
+  EXPECT_THROW(OpenCvCamera({empty.path().string(), 63, 48}, clock), CameraError);  // odd width: no YUYV
+}
+
+TEST(OpenCvCamera, WrongSizeOrUndecodableFramesStopTheReplayWithAnError) {
+  MonotonicClock clock;
+  TempDir dir;
+  write_frames(dir.path(), 1, 32, 24);  // smaller than configured
+  {
+    OpenCvCamera camera({dir.path().string(), 64, 48}, clock);
+    for (int i = 0; i < 1000 && camera.error().empty(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    EXPECT_NE(camera.error().find("frame 0 is 32x24, expected 64x48"), std::string::npos) << camera.error();
+    FrameView view;
+    EXPECT_FALSE(camera.grab_latest(view)) << "no frame was delivered";
+  }
+  TempDir broken;
+  std::ofstream(broken.path() / "frame_0000.png") << "not a png";
+  OpenCvCamera camera({broken.path().string(), 64, 48}, clock);
+  for (int i = 0; i < 1000 && camera.error().empty(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_NE(camera.error().find("frame_0000.png: cannot decode image"), std::string::npos) << camera.error();
+}
+
+}  // namespace
+}  // namespace ringlet::hal
