@@ -12,8 +12,6 @@
 namespace ringlet::vision {
 namespace {
 
-constexpr int kMaxArcRounds = 3;  // arcs do not use up line rounds, but are bounded on their own
-
 double norm(double x, double y) noexcept { return std::hypot(x, y); }
 
 }  // namespace
@@ -24,6 +22,8 @@ RansacScratch::RansacScratch(std::size_t capacity) {
   pool_.reserve(capacity);
   inliers_.reserve(capacity);
   circle_members_.reserve(capacity);
+  arc_.reserve(capacity);
+  piece_.reserve(capacity);
   order_.reserve(capacity);
 }
 
@@ -41,7 +41,7 @@ void RansacLineFinder::remove_from_pool(std::span<const int> members) noexcept {
 
 void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
                             const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials,
-                            int max_lines) noexcept {
+                            int max_lines, int skip_override) noexcept {
   out.count = 0;
   out.circle = CentreCircle{};
   out.stats = RansacStats{};
@@ -50,7 +50,7 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
   s.points_.clear();
   s.pixels_.clear();
   s.pool_.clear();
-  const auto skip = static_cast<std::size_t>(std::max(params_.skip, 1));
+  const auto skip = static_cast<std::size_t>(std::max(skip_override >= 1 ? skip_override : params_.skip, 1));
   for (std::size_t i = 0; i < candidates.size() && s.points_.size() < s.points_.capacity(); i += skip) {
     s.pool_.push_back(static_cast<int>(s.points_.size()));
     s.points_.push_back(candidates[i].ground);
@@ -64,8 +64,7 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
   SplitMix64 rng = SplitMix64::for_frame(params_.seed, frame);
 
   int rounds = 0;
-  int arc_rounds = 0;
-  while (rounds < rounds_cap && arc_rounds < kMaxArcRounds && s.pool_.size() >= min_inliers) {
+  while (rounds < rounds_cap && s.pool_.size() >= min_inliers) {
     std::size_t best = 0;
     Line2 best_line;
     int t = 0;
@@ -115,25 +114,19 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
         collect(line);
       }
     }
-    if (try_circle(line, out)) {
-      ++st.arcs_rejected;
-      ++arc_rounds;
-    } else {
-      ++rounds;
-      ++st.lines_extracted;
-      add_pieces(line, k, pose, out);
-      remove_from_pool(s.inliers_);
-    }
+    ++rounds;
+    if (add_pieces(line, k, pose, out)) ++st.lines_extracted;
+    remove_from_pool(s.inliers_);
     if (st.stopped_early) break;
   }
   if (st.stopped_early) st.points_left = static_cast<int>(s.pool_.size());
   merge(out, k, pose);
 }
 
-bool RansacLineFinder::try_circle(const Line2& line, LineSet& out) noexcept {
+bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept {
   auto& s = scratch_;
-  const IndexedPoints pts{s.points_, s.inliers_};
-  if (pts.size() < 6) return false;
+  if (piece.size() < 6) return false;
+  const IndexedPoints pts{s.points_, piece};
   double t_min = 1e300, t_max = -1e300;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const double t = line.along(pts[i]);
@@ -141,49 +134,86 @@ bool RansacLineFinder::try_circle(const Line2& line, LineSet& out) noexcept {
     t_max = std::max(t_max, t);
   }
   if (t_max - t_min > params_.circle_max_chord_m) return false;
-  const double lrms = line_rms(line, pts);
-  if (lrms < params_.circle_min_line_rms_m) return false;
   const double r0 = params_.circle_radius_m;
   const double r_tol = params_.circle_radius_tolerance * r0;
-  auto circle = fit_circle(pts);
+  // Trim stray points that happen to lie in the line's band (a quarter of the piece at most):
+  // repeatedly drop the worst circle residual while it exceeds half the inlier tolerance.
+  s.arc_.assign(piece.begin(), piece.end());
+  std::optional<Circle2> circle;
+  const std::size_t max_drops = piece.size() / 4;
+  for (std::size_t drops = 0;; ++drops) {
+    circle = fit_circle({s.points_, s.arc_});
+    if (!circle) return false;
+    std::size_t worst = 0;
+    double worst_excess = 0.0;
+    for (std::size_t i = 0; i < s.arc_.size(); ++i) {
+      const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(s.arc_[i])];
+      const double excess =
+          std::abs(norm(q.x - circle->centre.x, q.y - circle->centre.y) - circle->radius) - tolerance(q) / 2.0;
+      if (excess > worst_excess) {
+        worst_excess = excess;
+        worst = i;
+      }
+    }
+    if (worst_excess <= 0.0) break;
+    if (drops == max_drops || s.arc_.size() <= 6) return false;
+    s.arc_.erase(s.arc_.begin() + static_cast<std::ptrdiff_t>(worst));
+  }
+  const IndexedPoints arc{s.points_, s.arc_};
   if (!circle || std::abs(circle->radius - r0) > r_tol) return false;
-  if (!(circle_rms(*circle, pts) < params_.circle_rms_ratio * lrms)) return false;
+  const auto arc_line = fit_line_tls(arc);
+  const double lrms = arc_line ? line_rms(*arc_line, arc) : 0.0;
+  if (lrms < params_.circle_min_line_rms_m) return false;
+  if (!(circle_rms(*circle, arc) < params_.circle_rms_ratio * lrms)) return false;
 
-  // An arc. Take every remaining point on that circle, refit once with all of them.
+  // An arc. Take every remaining point on that circle and refit, until the set stops growing.
+  std::sort(s.arc_.begin(), s.arc_.end());
   const auto gather = [&](const Circle2& c) {
     s.circle_members_.clear();
     for (const int p : s.pool_) {
       const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
       const bool on_circle = std::abs(norm(q.x - c.centre.x, q.y - c.centre.y) - c.radius) <= tolerance(q);
-      if (on_circle || std::binary_search(s.inliers_.begin(), s.inliers_.end(), p)) s.circle_members_.push_back(p);
+      if (on_circle || std::binary_search(s.arc_.begin(), s.arc_.end(), p)) s.circle_members_.push_back(p);
     }
   };
   gather(*circle);
-  if (const auto all = fit_circle({s.points_, s.circle_members_}); all && std::abs(all->radius - r0) <= r_tol) {
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    const std::size_t before = s.circle_members_.size();
+    const auto all = fit_circle({s.points_, s.circle_members_});
+    if (!all || std::abs(all->radius - r0) > r_tol) break;
     circle = all;
     gather(*circle);
+    if (s.circle_members_.size() <= before) break;
   }
   const auto members = static_cast<int>(s.circle_members_.size());
   if (!out.circle.seen || members > out.circle.inliers) out.circle = {true, circle->centre, circle->radius, members};
+  ++out.stats.arcs_rejected;
   remove_from_pool(s.circle_members_);
   return true;
 }
 
-void RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
                                   LineSet& out) noexcept {
   auto& s = scratch_;
   s.order_.clear();
   for (const int p : s.inliers_) s.order_.emplace_back(line.along(s.points_[static_cast<std::size_t>(p)]), p);
   std::sort(s.order_.begin(), s.order_.end());
+  bool any = false;
   const auto close_piece = [&](std::size_t first, std::size_t last) {  // [first, last]
     const auto count = static_cast<int>(last - first + 1);
     const double t0 = s.order_[first].first;
     const double t1 = s.order_[last].first;
-    if (count < params_.min_inliers || t1 - t0 < params_.min_length_m) return;
+    if (count < params_.min_inliers) return;
+    // Arcs are tested per piece, so that a stray point far along the line cannot hide one.
+    s.piece_.clear();
+    for (std::size_t i = first; i <= last; ++i) s.piece_.push_back(s.order_[i].second);
+    if (try_circle(line, s.piece_, out)) return;
+    if (t1 - t0 < params_.min_length_m) return;
     if (out.count == kMaxLines) {
       ++out.stats.segments_dropped;
       return;
     }
+    any = true;
     FieldLine& f = out.lines[out.count++];
     f.ground_start = line.at(t0);
     f.ground_end = line.at(t1);
@@ -201,6 +231,7 @@ void RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
       first = i;
     }
   }
+  return any;
 }
 
 void RansacLineFinder::merge(LineSet& out, const hal::CameraIntrinsics& k, const hal::CameraPose& pose) const noexcept {

@@ -25,9 +25,11 @@ namespace ringlet::vision {
 struct DegradeProfile {
   int class_step = 1;     // classify every pixel (1) or every other row and column (2)
   int scan_stride = 2;    // px between scan lines
-  int max_trials = 30;    // RANSAC trials per line
-  int max_lines = 8;      // RANSAC extraction rounds
+  int max_trials = -1;    // RANSAC trials per line (−1: ransac.max_trials)
+  int max_lines = -1;     // RANSAC extraction rounds (−1: ransac.max_lines)
   int ball_stride = 4;    // px between ball seeds
+  int ransac_skip = -1;   // RANSAC_SKIP (−1: ransac.skip): a sparser scan keeps more of its fewer candidates, so
+                          // that lines keep enough points while trials × points still shrinks
 };
 
 inline constexpr int kDegradeLevels = 3;
@@ -40,11 +42,12 @@ struct VisionConfig {
   ScanParams scan{};
   RansacParams ransac{};
   BallParams ball{};
-  // Level 0 = full; 1 = half the sampling, half the trials; 2 = least.
+  // Level 0 = full (the RansacParams: Mi-Pal's 30 trials, skip 10); 1 = every other pixel
+  // classified, scan lines twice as far apart, half the trials; 2 = least.
   std::array<DegradeProfile, kDegradeLevels> degrade{{
-      {1, 2, 30, 8, 4},
-      {2, 4, 15, 6, 6},
-      {2, 8, 8, 4, 8},
+      {1, 2, -1, -1, 4, -1},
+      {2, 4, 15, 6, 6, 5},
+      {2, 8, 8, 4, 8, 3},
   }};
 };
 

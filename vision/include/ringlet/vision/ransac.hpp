@@ -61,8 +61,8 @@ struct RansacStats {
   int points_used = 0;           // after skip
   int trials_run = 0;
   int trials_skipped = 0;        // cut by the deadline
-  int lines_extracted = 0;       // extraction rounds that produced a line (before merging)
-  int arcs_rejected = 0;         // short curved "lines" taken as the centre circle
+  int lines_extracted = 0;       // extraction rounds that produced a segment (before merging)
+  int arcs_rejected = 0;         // short curved pieces taken as (part of) the centre circle
   int merges = 0;
   int segments_dropped = 0;      // pieces beyond kMaxLines
   bool stopped_early = false;    // the deadline ended extraction: lines may be missing
@@ -88,6 +88,8 @@ class RansacScratch {
   std::vector<int> pool_;                 // indices still unassigned
   std::vector<int> inliers_;
   std::vector<int> circle_members_;
+  std::vector<int> arc_;    // the part of a piece on its fitted circle
+  std::vector<int> piece_;  // one gap-free piece of a line
   std::vector<std::pair<double, int>> order_;
 };
 
@@ -95,19 +97,20 @@ class RansacLineFinder {
  public:
   RansacLineFinder(const RansacParams& params, std::size_t capacity) : params_(params), scratch_(capacity) {}
 
-  /// Fits lines to `candidates` for frame `frame` (the PRNG stream). `max_trials` overrides
-  /// params.max_trials when ≥ 0 (degrade levels). Image endpoints come from projecting the ground
+  /// Fits lines to `candidates` for frame `frame` (the PRNG stream). `max_trials`, `max_lines`
+  /// and `skip` override the params when ≥ 0 (resp. ≥ 1 for skip) (degrade levels). Image endpoints come from projecting the ground
   /// endpoints with (k, pose). The deadline is checked before every trial.
   void find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
             const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials = -1,
-            int max_lines = -1) noexcept;
+            int max_lines = -1, int skip = -1) noexcept;
 
   [[nodiscard]] const RansacParams& params() const noexcept { return params_; }
 
  private:
   [[nodiscard]] double tolerance(const hal::RobotPoint& p) const noexcept;
-  bool try_circle(const Line2& line, LineSet& out) noexcept;
-  void add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose, LineSet& out) noexcept;
+  bool try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept;
+  /// Emits the line's gap-free pieces (arcs go to the circle instead); true if any was emitted.
+  bool add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose, LineSet& out) noexcept;
   void merge(LineSet& out, const hal::CameraIntrinsics& k, const hal::CameraPose& pose) const noexcept;
   void remove_from_pool(std::span<const int> members) noexcept;
 
