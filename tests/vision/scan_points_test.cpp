@@ -29,7 +29,8 @@ Scanned scan(const testing::Scene& scene, const Camera& cam, ScanParams params =
   EXPECT_TRUE(classes.classify(f.view, table, first, step));
   CandidateBuffer out(4096);
   Scanned s;
-  s.stats = scan_line_points(classes, f.view, cam.k, cam.pose(), rows, params, out);
+  LineScanner scanner(640);
+  s.stats = scanner.scan(classes, f.view, cam.k, cam.pose(), rows, params, out);
   s.points.assign(out.points().begin(), out.points().end());
   EXPECT_EQ(out.dropped(), 0U);
   return s;

@@ -12,6 +12,7 @@ VisionPipeline::VisionPipeline(const VisionConfig& config, ColourTable table)
       table_(std::move(table)),
       classes_(config.intrinsics.width, config.intrinsics.height),
       first_row_(static_cast<std::size_t>(std::max(config.intrinsics.width, 0)), 0),
+      scanner_(config.intrinsics.width),
       candidates_(config.max_candidates),
       ransac_(config.ransac, config.max_candidates),
       ball_(config.ball, config.intrinsics.width, config.intrinsics.height) {}
@@ -62,7 +63,7 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
   if (classified && may_run(Stage::kScan)) {
     ScanParams scan = config_.scan;
     scan.stride = level.scan_stride;
-    r.scan = scan_line_points(classes_, frame, k, pose, first_row_, scan, candidates_);
+    r.scan = scanner_.scan(classes_, frame, k, pose, first_row_, scan, candidates_);
     r.candidates = static_cast<int>(candidates_.size());
     r.candidates_dropped = static_cast<int>(candidates_.dropped());
     scanned = true;

@@ -107,6 +107,7 @@ class VisionPipeline {
   ColourTable table_;
   ClassImage classes_;
   std::vector<int> first_row_;
+  LineScanner scanner_;
   CandidateBuffer candidates_;
   RansacLineFinder ransac_;
   BallDetector ball_;

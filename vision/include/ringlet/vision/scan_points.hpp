@@ -68,10 +68,30 @@ struct ScanStats {
   int rejected_width = 0;   // implausible width for a line at that distance (or no ground)
 };
 
-/// Appends the candidates of one frame to `out` (cleared first). `first_row` per column as from
-/// horizon_rows(); the class image must have been classified from `frame`.
-ScanStats scan_line_points(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
-                           const hal::CameraPose& pose, std::span<const int> first_row, const ScanParams& params,
-                           CandidateBuffer& out) noexcept;
+/// The scanner keeps one small run state per vertical scan line so that it can walk the class
+/// image row by row (cache-friendly) instead of column by column; the states are allocated at
+/// construction for frames up to `max_width` wide.
+class LineScanner {
+ public:
+  struct RunState {
+    int last_field;  // position of the last green sample
+    int run_a;       // current / pending white run [run_a, run_b]; kNoGreen: not after green
+    int run_b;
+    bool in_run;
+    bool pending;    // a white run that started next to green, waiting for green after it
+  };
+
+  explicit LineScanner(int max_width) : states_(static_cast<std::size_t>(max_width > 0 ? max_width : 0)) {}
+
+  /// Fills `out` (cleared first) with the candidates of one frame. `first_row` per column as from
+  /// horizon_rows(); the class image must have been classified from `frame`. Candidates come in
+  /// row order (vertical scans, interleaved across columns), then the horizontal scans.
+  ScanStats scan(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
+                 const hal::CameraPose& pose, std::span<const int> first_row, const ScanParams& params,
+                 CandidateBuffer& out) noexcept;
+
+ private:
+  std::vector<RunState> states_;
+};
 
 }  // namespace ringlet::vision
