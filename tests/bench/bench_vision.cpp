@@ -62,13 +62,15 @@ void BM_ScanPoints(benchmark::State& state) {
   CandidateBuffer out(4096);
   ScanParams params;
   params.stride = static_cast<int>(state.range(0));
+  params.horizontal = state.range(1) != 0;
   LineScanner scanner(640);
   for (auto _ : state) {
     benchmark::DoNotOptimize(scanner.scan(classes, f.yuyv.view, f.cam.k, f.pose, f.rows, params, out));
   }
   state.counters["candidates"] = static_cast<double>(out.size());
+  state.SetLabel(params.horizontal ? "vertical + horizontal" : "vertical only");
 }
-BENCHMARK(BM_ScanPoints)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ScanPoints)->Args({2, 1})->Args({2, 0})->Args({4, 1})->Args({8, 1})->Unit(benchmark::kMicrosecond);
 
 void BM_Ransac(benchmark::State& state) {
   const Fixture& f = fixture();

@@ -42,7 +42,10 @@ struct ScanLine {
   }
 };
 
-double dist(const hal::RobotPoint& a, const hal::RobotPoint& b) noexcept { return std::hypot(a.x - b.x, a.y - b.y); }
+double dist(const hal::RobotPoint& a, const hal::RobotPoint& b) noexcept {
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return std::sqrt(dx * dx + dy * dy);  // not hypot: no overflow possible here, and it is cheaper
+}
 
 // A green-white-green run [a, b] was found: check its edges and width, then keep its centre.
 void emit(const Context& ctx, const ScanLine& line, int a, int b) noexcept {
@@ -60,17 +63,17 @@ void emit(const Context& ctx, const ScanLine& line, int a, int b) noexcept {
   }
   const double centre = (static_cast<double>(a) + static_cast<double>(b)) / 2.0 + 0.5;
   const double extent = static_cast<double>(b - a + s);
+  // The ground footprint of one pixel along the scan, from the centre and its next pixel.
   const auto g = hal::pixel_to_ground(ctx.k, ctx.pose, line.pixel(centre));
-  const auto g0 = hal::pixel_to_ground(ctx.k, ctx.pose, line.pixel(centre - 0.5));
-  const auto g1 = hal::pixel_to_ground(ctx.k, ctx.pose, line.pixel(centre + 0.5));
-  if (!g || !g0 || !g1) {
+  const auto g1 = hal::pixel_to_ground(ctx.k, ctx.pose, line.pixel(centre + 1.0));
+  if (!g || !g1) {
     ++ctx.stats.rejected_width;
     return;
   }
   // A line crossing the scan at right angles on the ground is line_width_m wide; at other angles
   // it is wider (1/sin), which the factor allows down to ~20°; shallower crossings are left to the
   // scans in the other direction.
-  const double metres_per_px = std::max(dist(*g0, *g1), 1e-9);
+  const double metres_per_px = std::max(dist(*g, *g1), 1e-9);
   const double expected = ctx.params.line_width_m / metres_per_px;
   const double slack = ctx.params.width_slack_px + static_cast<double>(s);
   if (extent > ctx.params.max_width_factor * expected + slack || extent < ctx.params.min_width_factor * expected - slack) {
@@ -172,6 +175,12 @@ ScanStats LineScanner::scan(const ClassImage& classes, const hal::FrameView& fra
       const bool check_ground = y < max_first_row;
       RunState st = kFresh;
       for (int x = 0; x < w; x += s) {
+        if (!check_ground && !st.in_run && !st.pending && row[x] == static_cast<std::uint8_t>(ColourClass::kField)) {
+          // Tight skip over plain green (most of the row): only where it ends matters.
+          while (x + s < w && row[x + s] == static_cast<std::uint8_t>(ColourClass::kField)) x += s;
+          st.last_field = x;
+          continue;
+        }
         // Columns whose horizon lies below this row have no ground here.
         const auto c = check_ground && y < first_row[static_cast<std::size_t>(x)] ? ColourClass::kOther
                                                                                    : static_cast<ColourClass>(row[x]);
