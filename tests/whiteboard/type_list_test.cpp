@@ -12,7 +12,8 @@ namespace {
 TEST(WbTypeList, NamesAndIdsAreTheSchemaOnes) {
   const std::vector<std::string> names{"BallBelief", "HeadCommand", "MotionCommand",
                                        "Pose",       "LaserSummary", "FsmStatus",
-                                       "FsmControl", "ExecutiveTiming", "Print"};
+                                       "FsmControl", "ExecutiveTiming", "Print",
+                                       "FieldLines"};
   ASSERT_EQ(kTypeCount, names.size());
   for (std::size_t i = 0; i < kTypeCount; ++i) {
     EXPECT_EQ(kTypes[i].name, names[i]);

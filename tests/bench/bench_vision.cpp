@@ -1,0 +1,118 @@
+// Vision costs on a synthetic 640×480 field frame (halfway line, touch line, centre circle, ball,
+// pixel noise): classification (YUYV and BGR, full and every-other pixel), scan-line candidates,
+// RANSAC, the ball, and the whole pipeline at each degrade level. Target: the whole frame within
+// the 3 ms budget, classification under 0.5 ms.
+#include <benchmark/benchmark.h>
+
+#include <vector>
+
+#include "ringlet/vision/ball.hpp"
+#include "ringlet/vision/horizon.hpp"
+#include "ringlet/vision/pipeline.hpp"
+#include "synthetic_field.hpp"
+
+namespace {
+
+using namespace ringlet;
+using namespace ringlet::vision;
+
+struct Fixture {
+  testing::Camera cam;
+  testing::Frame yuyv = testing::render(testing::field_scene(), cam, hal::PixelFormat::kYuyv);
+  testing::Frame bgr = testing::render(testing::field_scene(), cam, hal::PixelFormat::kBgr8);
+  ColourTable table = ColourTable::from_thresholds({});
+  hal::CameraPose pose = cam.pose();
+  std::vector<int> rows = std::vector<int>(640);
+  int first = horizon_rows(cam.k, pose, 2, rows);
+};
+
+const Fixture& fixture() {
+  static const Fixture f;
+  return f;
+}
+
+void BM_ClassifyYuyv(benchmark::State& state) {
+  const Fixture& f = fixture();
+  ClassImage classes(640, 480);
+  const int step = static_cast<int>(state.range(0));
+  const int first = state.range(1) != 0 ? f.first : 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(classes.classify(f.yuyv.view, f.table, first, step));
+    benchmark::ClobberMemory();
+  }
+  state.SetLabel(first == 0 ? "whole frame" : "below horizon");
+}
+BENCHMARK(BM_ClassifyYuyv)->Args({1, 0})->Args({1, 1})->Args({2, 1})->Unit(benchmark::kMicrosecond);
+
+void BM_ClassifyBgr(benchmark::State& state) {
+  const Fixture& f = fixture();
+  ClassImage classes(640, 480);
+  const int step = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(classes.classify(f.bgr.view, f.table, f.first, step));
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_ClassifyBgr)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+
+void BM_ScanPoints(benchmark::State& state) {
+  const Fixture& f = fixture();
+  ClassImage classes(640, 480);
+  classes.classify(f.yuyv.view, f.table, f.first, 1);
+  CandidateBuffer out(4096);
+  ScanParams params;
+  params.stride = static_cast<int>(state.range(0));
+  params.horizontal = state.range(1) != 0;
+  LineScanner scanner(640);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(scanner.scan(classes, f.yuyv.view, f.cam.k, f.pose, f.rows, params, out));
+  }
+  state.counters["candidates"] = static_cast<double>(out.size());
+  state.SetLabel(params.horizontal ? "vertical + horizontal" : "vertical only");
+}
+BENCHMARK(BM_ScanPoints)->Args({2, 1})->Args({2, 0})->Args({4, 1})->Args({8, 1})->Unit(benchmark::kMicrosecond);
+
+void BM_Ransac(benchmark::State& state) {
+  const Fixture& f = fixture();
+  ClassImage classes(640, 480);
+  classes.classify(f.yuyv.view, f.table, f.first, 1);
+  CandidateBuffer cands(4096);
+  LineScanner scanner(640);
+  scanner.scan(classes, f.yuyv.view, f.cam.k, f.pose, f.rows, {}, cands);
+  RansacLineFinder finder({}, 4096);
+  LineSet out;
+  std::uint64_t frame = 0;
+  for (auto _ : state) {
+    finder.find(cands.points(), ++frame, f.cam.k, f.pose, {}, out);
+    benchmark::DoNotOptimize(out.count);
+  }
+  state.counters["lines"] = static_cast<double>(out.count);
+  state.counters["trials"] = out.stats.trials_run;
+}
+BENCHMARK(BM_Ransac)->Unit(benchmark::kMicrosecond);
+
+void BM_Ball(benchmark::State& state) {
+  const Fixture& f = fixture();
+  ClassImage classes(640, 480);
+  classes.classify(f.yuyv.view, f.table, f.first, 1);
+  BallDetector detector({}, 640, 480);
+  for (auto _ : state) benchmark::DoNotOptimize(detector.detect(classes, f.cam.k, f.pose));
+}
+BENCHMARK(BM_Ball)->Unit(benchmark::kMicrosecond);
+
+void BM_Pipeline(benchmark::State& state) {
+  const Fixture& f = fixture();
+  VisionPipeline pipeline(VisionConfig{}, f.table);
+  const int level = static_cast<int>(state.range(0));
+  hal::FrameView view = f.yuyv.view;
+  for (auto _ : state) {
+    ++view.sequence;
+    benchmark::DoNotOptimize(pipeline.process(view, f.cam.head, {}, level).line_count);
+  }
+  state.counters["lines"] = static_cast<double>(pipeline.result().line_count);
+}
+BENCHMARK(BM_Pipeline)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,185 @@
+// The whole pipeline on a synthetic field, the budget (a fake stopwatch that runs out after N
+// reads: trials are cut and reported, later stages skipped) and the degrade levels.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ringlet/vision/pipeline.hpp"
+#include "ringlet/whiteboard/messages.hpp"
+#include "synthetic_field.hpp"
+
+namespace ringlet::vision {
+namespace {
+
+using testing::Camera;
+
+/// Every read of the clock advances it by 1 µs: "N reads" is a budget of N µs.
+class FakeStopwatch final : public hal::Stopwatch {
+ public:
+  [[nodiscard]] hal::Nanos wall_now() const noexcept override { return hal::Nanos{1000 * reads_++}; }
+  [[nodiscard]] hal::Nanos cpu_now() const noexcept override { return wall_now(); }
+  [[nodiscard]] long reads() const noexcept { return reads_; }
+
+ private:
+  mutable long reads_ = 0;
+};
+
+Deadline after_reads(const FakeStopwatch& w, long n) { return Deadline{&w, hal::Nanos{1000 * n}, false}; }
+
+VisionPipeline make() { return VisionPipeline(VisionConfig{}, ColourTable::from_thresholds({})); }
+
+bool matches(const FieldLine& f, hal::RobotPoint a, hal::RobotPoint b, double tol) {
+  const auto off = [&](hal::RobotPoint p) {
+    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    return std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / len;
+  };
+  return off(f.ground_start) < tol && off(f.ground_end) < tol;
+}
+
+TEST(Pipeline, FindsTheLinesTheCircleAndTheBall) {
+  Camera cam;
+  const auto frame = testing::render(testing::field_scene(), cam, hal::PixelFormat::kYuyv, 17);
+  VisionPipeline p = make();
+  const VisionResult& r = p.process(frame.view, cam.head);
+  EXPECT_EQ(r.status, VisionStatus::kOk);
+  EXPECT_EQ(r.sequence, 17U);
+  EXPECT_GT(r.candidates, 200);
+  int halfway = 0, touch = 0;
+  for (std::size_t i = 0; i < r.line_count; ++i) {
+    const FieldLine& f = r.lines[i];
+    if (matches(f, {3.0, -3.0}, {3.0, 3.0}, 0.1)) {
+      ++halfway;
+    } else if (matches(f, {0.8, 1.2}, {6.0, 1.2}, 0.1)) {
+      ++touch;
+    } else {
+      ADD_FAILURE() << "spurious line (" << f.ground_start.x << "," << f.ground_start.y << ")-(" << f.ground_end.x
+                    << "," << f.ground_end.y << ") inliers " << f.inliers;
+    }
+  }
+  EXPECT_GE(halfway, 1);
+  EXPECT_GE(touch, 1);
+  EXPECT_TRUE(r.circle.seen);
+  if (r.circle.seen) {
+    EXPECT_NEAR(r.circle.radius_m, 0.75, 0.1);
+    EXPECT_NEAR(r.circle.centre.x, 3.0, 0.15);
+    EXPECT_NEAR(r.circle.centre.y, 0.0, 0.15);
+  }
+  ASSERT_TRUE(r.ball.seen);
+  EXPECT_NEAR(r.ball.ground.x, 1.4, 0.05);
+  EXPECT_NEAR(r.ball.ground.y, -0.4, 0.03);
+  EXPECT_FALSE(r.cut.deadline_hit);
+  EXPECT_EQ(r.cut.stages_skipped, 0);
+}
+
+TEST(Pipeline, SameFrameSameResult) {
+  Camera cam;
+  const auto frame = testing::render(testing::field_scene(), cam, hal::PixelFormat::kBgr8, 3);
+  VisionPipeline a = make(), b = make();
+  const VisionResult& ra = a.process(frame.view, cam.head);
+  const VisionResult& rb = b.process(frame.view, cam.head);
+  ASSERT_EQ(ra.line_count, rb.line_count);
+  for (std::size_t i = 0; i < ra.line_count; ++i) {
+    EXPECT_EQ(ra.lines[i].ground_start.x, rb.lines[i].ground_start.x);
+    EXPECT_EQ(ra.lines[i].inliers, rb.lines[i].inliers);
+  }
+}
+
+TEST(Pipeline, DeadlineCutsTrialsAndSaysSo) {
+  Camera cam;
+  const auto frame = testing::render(testing::field_scene(), cam, hal::PixelFormat::kYuyv);
+  VisionPipeline p = make();
+  // Unlimited first, counting the reads a full run makes.
+  FakeStopwatch full_watch;
+  const VisionResult full = p.process(frame.view, cam.head, after_reads(full_watch, 1L << 40));
+  EXPECT_FALSE(full.cut.deadline_hit);
+  EXPECT_EQ(full.cut.trials_skipped, 0);
+  EXPECT_GT(full.ransac.trials_run, 30);
+  EXPECT_EQ(full.stage_time[static_cast<std::size_t>(Stage::kRansac)].count() % 1000, 0);
+  // Reads before RANSAC: start, 4 laps, 4 stage checks (classify, ball, scan, RANSAC) = 9; then
+  // one per trial. A budget of 9 + 12 reads lets exactly 12 trials run.
+  FakeStopwatch watch;
+  const VisionResult& cut = p.process(frame.view, cam.head, after_reads(watch, 9 + 12));
+  EXPECT_TRUE(cut.cut.deadline_hit);
+  EXPECT_TRUE(cut.cut.lines_not_extracted);
+  EXPECT_EQ(cut.ransac.trials_run, 12);
+  EXPECT_EQ(cut.cut.trials_skipped, 30 - 12);
+  EXPECT_GT(cut.cut.points_left, 0);
+  EXPECT_EQ(cut.cut.stages_skipped, 0);  // RANSAC started, it was cut short
+  EXPECT_TRUE(cut.ball.seen);            // the ball ran before
+  EXPECT_LE(cut.line_count, 2U);         // the best of 12 trials is still used (maybe in pieces)
+}
+
+TEST(Pipeline, ExpiredDeadlineSkipsStages) {
+  Camera cam;
+  const auto frame = testing::render(testing::field_scene(), cam, hal::PixelFormat::kYuyv);
+  VisionPipeline p = make();
+  FakeStopwatch watch;
+  const VisionResult& r = p.process(frame.view, cam.head, after_reads(watch, 0));
+  EXPECT_TRUE(r.cut.deadline_hit);
+  const auto bit = [](Stage s) { return 1U << static_cast<unsigned>(s); };
+  EXPECT_EQ(r.cut.stages_skipped, bit(Stage::kClassify) | bit(Stage::kBall) | bit(Stage::kScan) | bit(Stage::kRansac));
+  EXPECT_FALSE(r.ball.seen);
+  EXPECT_EQ(r.line_count, 0U);
+}
+
+TEST(Pipeline, DegradeLevelsDoLess) {
+  Camera cam;
+  const auto frame = testing::render(testing::field_scene(), cam, hal::PixelFormat::kYuyv);
+  VisionPipeline p = make();
+  const VisionResult r0 = p.process(frame.view, cam.head, {}, 0);
+  const VisionResult r1 = p.process(frame.view, cam.head, {}, 1);
+  const VisionResult r2 = p.process(frame.view, cam.head, {}, 2);
+  const VisionResult r9 = p.process(frame.view, cam.head, {}, 9);
+  EXPECT_EQ(r9.degrade_level, 2);
+  EXPECT_GT(r0.candidates, r1.candidates);
+  EXPECT_GT(r1.candidates, r2.candidates);
+  EXPECT_GT(r0.ransac.trials_run, r1.ransac.trials_run);
+  EXPECT_GT(r1.ransac.trials_run, r2.ransac.trials_run);
+  EXPECT_EQ(r1.ransac.trials_run % 15, 0);
+  EXPECT_EQ(r2.ransac.trials_run % 8, 0);
+  // Still useful: the halfway line and the ball at every level.
+  for (const VisionResult* r : {&r0, &r1, &r2}) {
+    bool halfway = false;
+    for (std::size_t i = 0; i < r->line_count; ++i) halfway |= matches(r->lines[i], {3.0, -3.0}, {3.0, 3.0}, 0.1);
+    EXPECT_TRUE(halfway) << r->degrade_level;
+    EXPECT_TRUE(r->ball.seen) << r->degrade_level;
+  }
+}
+
+TEST(Pipeline, WrongFrameSizeIsRefused) {
+  VisionPipeline p = make();
+  std::vector<std::uint8_t> bytes(320 * 240 * 2);
+  hal::FrameView f;
+  f.width = 320;
+  f.height = 240;
+  f.stride = 640;
+  f.data = bytes.data();
+  EXPECT_EQ(p.process(f, {}).status, VisionStatus::kBadFrame);
+}
+
+// The FieldLines message holds what the pipeline reports (the firmware fills it like this).
+TEST(Pipeline, FieldLinesMessageHoldsTheResult) {
+  static_assert(std::tuple_size_v<decltype(wb::FieldLines{}.length)> == kMaxLines);
+  Camera cam;
+  const auto frame = testing::render(testing::field_scene(), cam, hal::PixelFormat::kYuyv, 42);
+  VisionPipeline p = make();
+  const VisionResult& r = p.process(frame.view, cam.head);
+  wb::FieldLines m;
+  m.sequence = r.sequence;
+  m.capture_time_ns = r.capture_time.count();
+  m.count = static_cast<std::uint8_t>(r.line_count);
+  for (std::size_t i = 0; i < r.line_count; ++i) {
+    m.image_u0[i] = r.lines[i].image_start.u;
+    m.ground_x0[i] = r.lines[i].ground_start.x;
+    m.length[i] = r.lines[i].length_m;
+    m.inliers[i] = static_cast<std::uint16_t>(r.lines[i].inliers);
+  }
+  m.circle_seen = r.circle.seen;
+  m.circle_radius = r.circle.radius_m;
+  const auto back = wb::FieldLines::from_string(m.description());
+  ASSERT_TRUE(back.has_value()) << back.error();
+  EXPECT_EQ(back.value(), m);
+}
+
+}  // namespace
+}  // namespace ringlet::vision

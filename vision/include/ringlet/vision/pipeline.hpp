@@ -1,0 +1,117 @@
+#pragma once
+// The vision step for one frame, inside a time budget:
+//   horizon → classify (below the horizon) → ball → scan lines → RANSAC lines.
+// The ball goes before the lines because it matters more and costs little; RANSAC is last
+// because it is the part that degrades gracefully (its trials can be cut).
+//
+// Everything is allocated in the constructor; process() allocates nothing.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "ringlet/hal/camera.hpp"
+#include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/hal/sensors.hpp"
+#include "ringlet/vision/ball.hpp"
+#include "ringlet/vision/class_image.hpp"
+#include "ringlet/vision/colour_table.hpp"
+#include "ringlet/vision/deadline.hpp"
+#include "ringlet/vision/ransac.hpp"
+#include "ringlet/vision/scan_points.hpp"
+
+namespace ringlet::vision {
+
+/// What one degrade level does.
+struct DegradeProfile {
+  int class_step = 1;     // classify every pixel (1) or every other row and column (2)
+  int scan_stride = 2;    // px between scan lines
+  int max_trials = -1;    // RANSAC trials per line (−1: ransac.max_trials)
+  int max_lines = -1;     // RANSAC extraction rounds (−1: ransac.max_lines)
+  int ball_stride = 4;    // px between ball seeds
+  int ransac_skip = -1;   // RANSAC_SKIP (−1: ransac.skip): a sparser scan keeps more of its fewer candidates, so
+                          // that lines keep enough points while trials × points still shrinks
+};
+
+inline constexpr int kDegradeLevels = 3;
+
+struct VisionConfig {
+  hal::CameraIntrinsics intrinsics = hal::CameraIntrinsics::nao();
+  hal::CameraMount mount{};
+  int horizon_margin_px = 2;             // rows below the horizon left out (too far to use)
+  std::size_t max_candidates = 4096;
+  ScanParams scan{};
+  RansacParams ransac{};
+  BallParams ball{};
+  // Level 0 = full (the RansacParams: Mi-Pal's 30 trials, skip 10); 1 = every other pixel
+  // classified, scan lines twice as far apart, half the trials; 2 = least.
+  std::array<DegradeProfile, kDegradeLevels> degrade{{
+      {1, 2, -1, -1, 4, -1},
+      {2, 4, 15, 6, 6, 5},
+      {2, 8, 8, 4, 8, 3},
+  }};
+};
+
+enum class Stage : std::uint8_t { kHorizon, kClassify, kBall, kScan, kRansac, kCount };
+inline constexpr std::size_t kStageCount = static_cast<std::size_t>(Stage::kCount);
+
+enum class VisionStatus : std::uint8_t {
+  kOk,
+  kBadFrame,  // size differs from the configured intrinsics, or no data: nothing was done
+};
+
+struct CutStats {
+  bool deadline_hit = false;
+  std::uint8_t stages_skipped = 0;   // bit (1 << Stage) per stage not run at all
+  int trials_skipped = 0;            // RANSAC trials cut by the deadline
+  bool lines_not_extracted = false;  // extraction stopped before the points ran out
+  int points_left = 0;               // used candidate points never examined
+};
+
+struct VisionResult {
+  VisionStatus status = VisionStatus::kOk;
+  std::uint64_t sequence = 0;
+  hal::Nanos capture_time{0};
+  int degrade_level = 0;
+  int horizon_row = 0;  // first ground row (minimum over columns), image height when none
+  std::array<FieldLine, kMaxLines> lines{};
+  std::size_t line_count = 0;
+  CentreCircle circle{};
+  BallDetection ball{};
+  int candidates = 0;           // scan points found
+  int candidates_dropped = 0;   // beyond max_candidates
+  ScanStats scan{};
+  RansacStats ransac{};
+  CutStats cut{};
+  std::array<hal::Nanos, kStageCount> stage_time{};  // by Stage; measured on the deadline's stopwatch
+  hal::Nanos total_time{0};
+};
+
+class VisionPipeline {
+ public:
+  VisionPipeline(const VisionConfig& config, ColourTable table);
+
+  /// One frame. `degrade_level` is clamped to [0, kDegradeLevels). With a stopwatch in the
+  /// deadline, stages are timed and the deadline is checked between stages and between RANSAC
+  /// trials; a stage that would start after the deadline is skipped and reported.
+  const VisionResult& process(const hal::FrameView& frame, const hal::HeadJoints& head, const Deadline& deadline = {},
+                              int degrade_level = 0) noexcept;
+
+  [[nodiscard]] const VisionResult& result() const noexcept { return result_; }
+  [[nodiscard]] const ClassImage& classes() const noexcept { return classes_; }
+  [[nodiscard]] const CandidateBuffer& candidates() const noexcept { return candidates_; }
+  [[nodiscard]] const VisionConfig& config() const noexcept { return config_; }
+  [[nodiscard]] const ColourTable& table() const noexcept { return table_; }
+
+ private:
+  VisionConfig config_;
+  ColourTable table_;
+  ClassImage classes_;
+  std::vector<int> first_row_;
+  LineScanner scanner_;
+  CandidateBuffer candidates_;
+  RansacLineFinder ransac_;
+  BallDetector ball_;
+  VisionResult result_;
+};
+
+}  // namespace ringlet::vision

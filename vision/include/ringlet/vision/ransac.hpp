@@ -1,0 +1,121 @@
+#pragma once
+// Field lines from candidate points by RANSAC, after Mi-Pal (§6.2 of their report): MAX_TRIALS
+// random two-point hypotheses per line and only every RANSAC_SKIP-th candidate used at all. Lines
+// are extracted one after another (inliers removed), refined by total least squares, split at
+// gaps, merged when collinear, and arcs of the centre circle are recognised instead of being
+// reported as short straight lines. All geometry is on the ground (robot frame), where a tolerance
+// in metres means the same thing near and far.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/vision/deadline.hpp"
+#include "ringlet/vision/fit.hpp"
+#include "ringlet/vision/scan_points.hpp"
+
+namespace ringlet::vision {
+
+inline constexpr std::size_t kMaxLines = 12;
+
+struct RansacParams {
+  int max_trials = 30;               // MAX_TRIALS: two-point hypotheses per extracted line
+  int skip = 10;                     // RANSAC_SKIP: candidate i is used only if i % skip == 0
+  int max_lines = 8;                 // extraction rounds (≤ kMaxLines segments are reported)
+  int min_inliers = 5;               // a line (and each piece of it) needs this many used points
+  double inlier_base_m = 0.04;       // inlier tolerance = base + per_m × range of the point: the
+  double inlier_per_m = 0.015;       //   ground footprint of a pixel grows with distance
+  double min_length_m = 0.25;        // shorter pieces are dropped
+  double split_gap_m = 0.6;          // a gap longer than this between consecutive inliers splits
+  double merge_angle_deg = 5.0;      // collinear merge: directions within this angle, and
+  double merge_offset_m = 0.10;      //   each segment's endpoints this close to the other's line,
+                                     //   and their gap along it below split_gap_m
+  double circle_radius_m = 0.75;     // the centre circle
+  double circle_radius_tolerance = 0.25;  // accepted radius: r0 × (1 ± this)
+  double circle_max_chord_m = 1.8;   // longer lines are never taken for arcs
+  double circle_rms_ratio = 0.6;     // an arc: circle-fit RMS < this × line-fit RMS, and
+  double circle_min_line_rms_m = 0.008;  //   the line fit's RMS above this (visible curvature)
+  std::uint64_t seed = 0x52494E474C4554ULL;  // "RINGLET"; per frame: SplitMix64::for_frame
+};
+
+struct FieldLine {
+  hal::Pixel image_start{};
+  hal::Pixel image_end{};
+  hal::RobotPoint ground_start{};
+  hal::RobotPoint ground_end{};
+  double length_m = 0.0;
+  int inliers = 0;  // used (every skip-th) candidate points supporting it
+};
+
+struct CentreCircle {
+  bool seen = false;
+  hal::RobotPoint centre{};
+  double radius_m = 0.0;
+  int inliers = 0;
+};
+
+struct RansacStats {
+  int points_in = 0;             // candidates offered
+  int points_used = 0;           // after skip
+  int trials_run = 0;
+  int trials_skipped = 0;        // cut by the deadline
+  int lines_extracted = 0;       // extraction rounds that produced a segment (before merging)
+  int arcs_rejected = 0;         // short curved pieces taken as (part of) the centre circle
+  int merges = 0;
+  int segments_dropped = 0;      // pieces beyond kMaxLines
+  bool stopped_early = false;    // the deadline ended extraction: lines may be missing
+  int points_left = 0;           // used points never examined because of that
+};
+
+struct LineSet {
+  std::array<FieldLine, kMaxLines> lines{};
+  std::size_t count = 0;
+  CentreCircle circle{};
+  RansacStats stats{};
+};
+
+/// Scratch storage for one candidate capacity, allocated once.
+class RansacScratch {
+ public:
+  explicit RansacScratch(std::size_t capacity);
+
+ private:
+  friend class RansacLineFinder;
+  std::vector<hal::RobotPoint> points_;   // used points (ground)
+  std::vector<hal::Pixel> pixels_;        // their image positions
+  std::vector<int> pool_;                 // indices still unassigned
+  std::vector<int> inliers_;
+  std::vector<int> circle_members_;
+  std::vector<int> arc_;    // the part of a piece on its fitted circle
+  std::vector<int> piece_;  // one gap-free piece of a line
+  std::vector<std::pair<double, int>> order_;
+};
+
+class RansacLineFinder {
+ public:
+  RansacLineFinder(const RansacParams& params, std::size_t capacity) : params_(params), scratch_(capacity) {}
+
+  /// Fits lines to `candidates` for frame `frame` (the PRNG stream). `max_trials`, `max_lines`
+  /// and `skip` override the params when ≥ 0 (resp. ≥ 1 for skip) (degrade levels). Image endpoints come from projecting the ground
+  /// endpoints with (k, pose). The deadline is checked before every trial.
+  void find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
+            const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials = -1,
+            int max_lines = -1, int skip = -1) noexcept;
+
+  [[nodiscard]] const RansacParams& params() const noexcept { return params_; }
+
+ private:
+  [[nodiscard]] double tolerance(const hal::RobotPoint& p) const noexcept;
+  bool try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept;
+  /// Emits the line's gap-free pieces (arcs go to the circle instead); true if any was emitted.
+  bool add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose, LineSet& out) noexcept;
+  void merge(LineSet& out, const hal::CameraIntrinsics& k, const hal::CameraPose& pose) const noexcept;
+  void remove_from_pool(std::span<const int> members) noexcept;
+
+  RansacParams params_;
+  RansacScratch scratch_;
+};
+
+}  // namespace ringlet::vision

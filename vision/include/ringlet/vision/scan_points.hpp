@@ -1,0 +1,97 @@
+#pragma once
+// Line candidate points from scan lines: green → white → green runs along vertical scan lines
+// every `stride` columns (and horizontal ones every `stride` rows, for lines seen end-on), below
+// the horizon, checked by luminance edges and by the width a 5 cm line has at that distance.
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ringlet/hal/camera.hpp"
+#include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/vision/class_image.hpp"
+
+namespace ringlet::vision {
+
+struct ScanParams {
+  int stride = 2;                   // px between scan lines (rounded up to a multiple of the class step)
+  bool horizontal = true;           // also scan rows (lines running down the image)
+  int edge_threshold = 24;          // min Y rise into and fall out of the run (the line's centre
+                                    // vs `edge_offset` samples outside it)
+  int edge_offset = 2;              // samples outside the run where the background Y is read
+  int max_gap = 2;                  // samples of neither field nor line allowed between green and
+                                    // white (blurred edges)
+  double line_width_m = 0.05;       // painted line width
+  double max_width_factor = 3.0;    // runs wider than this × expected are robots / white blobs
+  double min_width_factor = 0.3;    // runs narrower than this × expected are noise
+  double width_slack_px = 2.0;      // added to both bounds (+ the class step): edge pixels
+};
+
+enum class ScanDirection : std::uint8_t { kVertical, kHorizontal };
+
+struct CandidatePoint {
+  hal::Pixel pixel{};          // the run's centre (pixel-centre coordinates: pixel i spans [i, i+1))
+  hal::RobotPoint ground{};    // where it lies on the ground, robot frame
+  float width_px = 0.0F;       // the run's extent along the scan line
+  ScanDirection direction = ScanDirection::kVertical;
+};
+
+/// A fixed-capacity list of candidates: storage allocated at construction, push refuses (and
+/// counts) points beyond the capacity.
+class CandidateBuffer {
+ public:
+  explicit CandidateBuffer(std::size_t capacity) : points_(capacity) {}
+  void clear() noexcept { count_ = 0; dropped_ = 0; }
+  bool push(const CandidatePoint& p) noexcept {
+    if (count_ == points_.size()) {
+      ++dropped_;
+      return false;
+    }
+    points_[count_++] = p;
+    return true;
+  }
+  [[nodiscard]] std::span<const CandidatePoint> points() const noexcept { return {points_.data(), count_}; }
+  [[nodiscard]] std::size_t size() const noexcept { return count_; }
+  [[nodiscard]] std::size_t capacity() const noexcept { return points_.size(); }
+  [[nodiscard]] std::size_t dropped() const noexcept { return dropped_; }
+
+ private:
+  std::vector<CandidatePoint> points_;
+  std::size_t count_ = 0;
+  std::size_t dropped_ = 0;
+};
+
+struct ScanStats {
+  int scan_lines = 0;
+  int runs = 0;             // green-white-green runs found
+  int rejected_edge = 0;    // too little luminance step
+  int rejected_width = 0;   // implausible width for a line at that distance (or no ground)
+};
+
+/// The scanner keeps one small run state per vertical scan line so that it can walk the class
+/// image row by row (cache-friendly) instead of column by column; the states are allocated at
+/// construction for frames up to `max_width` wide.
+class LineScanner {
+ public:
+  struct RunState {
+    int last_field;  // position of the last green sample
+    int run_a;       // current / pending white run [run_a, run_b]; kNoGreen: not after green
+    int run_b;
+    bool in_run;
+    bool pending;    // a white run that started next to green, waiting for green after it
+  };
+
+  explicit LineScanner(int max_width) : states_(static_cast<std::size_t>(max_width > 0 ? max_width : 0)) {}
+
+  /// Fills `out` (cleared first) with the candidates of one frame. `first_row` per column as from
+  /// horizon_rows(); the class image must have been classified from `frame`. Candidates come in
+  /// row order (vertical scans, interleaved across columns), then the horizontal scans.
+  ScanStats scan(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
+                 const hal::CameraPose& pose, std::span<const int> first_row, const ScanParams& params,
+                 CandidateBuffer& out) noexcept;
+
+ private:
+  std::vector<RunState> states_;
+};
+
+}  // namespace ringlet::vision

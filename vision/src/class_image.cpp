@@ -1,0 +1,59 @@
+// Frame classification: one LUT load per classified pixel, plain loops the compiler can unroll.
+#include <algorithm>
+
+#include "ringlet/vision/class_image.hpp"
+
+namespace ringlet::vision {
+
+ClassImage::ClassImage(int width, int height)
+    : width_(std::max(width, 0)),
+      height_(std::max(height, 0)),
+      data_(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0) {}
+
+bool ClassImage::classify(const hal::FrameView& frame, const ColourTable& table, int first_row, int step) noexcept {
+  if (frame.width != width_ || frame.height != height_ || frame.data == nullptr) return false;
+  step_ = step == 2 ? 2 : 1;
+  first_row_ = std::clamp(first_row, 0, height_);
+  const std::uint8_t* lut = table.data();
+  const int bits = table.bin_bits();
+  const int s = 8 - bits;
+  const auto idx = [bits, s](unsigned y, unsigned u, unsigned v) {
+    return (static_cast<std::size_t>(y >> s) << (2 * bits)) | (static_cast<std::size_t>(u >> s) << bits) |
+           static_cast<std::size_t>(v >> s);
+  };
+  const auto w = static_cast<std::size_t>(width_);
+  for (int y = first_row_; y < height_; y += step_) {
+    const std::uint8_t* in = frame.data + static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.stride);
+    std::uint8_t* out = data_.data() + static_cast<std::size_t>(y) * w;
+    switch (frame.format) {
+      case hal::PixelFormat::kYuyv:
+        if (step_ == 1) {
+          for (std::size_t x = 0; x + 1 < w; x += 2) {
+            const std::uint8_t* p = in + 2 * x;  // Y0 U Y1 V
+            out[x] = lut[idx(p[0], p[1], p[3])];
+            out[x + 1] = lut[idx(p[2], p[1], p[3])];
+          }
+          if ((w & 1U) != 0) out[w - 1] = lut[idx(in[2 * (w - 1)], in[2 * (w - 1) + 1], 128)];
+        } else {
+          for (std::size_t x = 0; x < w; x += 2) {
+            const std::uint8_t* p = in + 2 * x;
+            out[x] = lut[idx(p[0], p[1], x + 1 < w ? p[3] : 128U)];
+          }
+        }
+        break;
+      case hal::PixelFormat::kBgr8:
+        for (std::size_t x = 0; x < w; x += static_cast<std::size_t>(step_)) {
+          const std::uint8_t* p = in + 3 * x;
+          const Yuv c = bgr_to_yuv(p[0], p[1], p[2]);
+          out[x] = lut[idx(c.y, c.u, c.v)];
+        }
+        break;
+      case hal::PixelFormat::kGray8:
+        for (std::size_t x = 0; x < w; x += static_cast<std::size_t>(step_)) out[x] = lut[idx(in[x], 128, 128)];
+        break;
+    }
+  }
+  return true;
+}
+
+}  // namespace ringlet::vision

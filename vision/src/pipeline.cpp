@@ -1,0 +1,97 @@
+#include "ringlet/vision/pipeline.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "ringlet/vision/horizon.hpp"
+
+namespace ringlet::vision {
+
+VisionPipeline::VisionPipeline(const VisionConfig& config, ColourTable table)
+    : config_(config),
+      table_(std::move(table)),
+      classes_(config.intrinsics.width, config.intrinsics.height),
+      first_row_(static_cast<std::size_t>(std::max(config.intrinsics.width, 0)), 0),
+      scanner_(config.intrinsics.width),
+      candidates_(config.max_candidates),
+      ransac_(config.ransac, config.max_candidates),
+      ball_(config.ball, config.intrinsics.width, config.intrinsics.height) {}
+
+const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const hal::HeadJoints& head,
+                                            const Deadline& deadline, int degrade_level) noexcept {
+  VisionResult& r = result_;
+  r = VisionResult{};
+  r.sequence = frame.sequence;
+  r.capture_time = frame.capture_time;
+  r.degrade_level = std::clamp(degrade_level, 0, kDegradeLevels - 1);
+  const DegradeProfile& level = config_.degrade[static_cast<std::size_t>(r.degrade_level)];
+  const hal::CameraIntrinsics& k = config_.intrinsics;
+  if (frame.width != k.width || frame.height != k.height || frame.data == nullptr) {
+    r.status = VisionStatus::kBadFrame;
+    return r;
+  }
+
+  const hal::Nanos start = deadline.now();
+  hal::Nanos mark = start;
+  const auto lap = [&](Stage stage) {
+    const hal::Nanos now = deadline.now();
+    r.stage_time[static_cast<std::size_t>(stage)] = now - mark;
+    mark = now;
+  };
+  // True when the stage may run; otherwise records it as skipped.
+  const auto may_run = [&](Stage stage) {
+    if (!deadline.expired()) return true;
+    r.cut.deadline_hit = true;
+    r.cut.stages_skipped = static_cast<std::uint8_t>(r.cut.stages_skipped | (1U << static_cast<unsigned>(stage)));
+    return false;
+  };
+
+  const hal::CameraPose pose = hal::CameraPose::from_head(config_.mount, head);
+  r.horizon_row = horizon_rows(k, pose, config_.horizon_margin_px, first_row_);
+  lap(Stage::kHorizon);
+
+  bool classified = false;
+  if (may_run(Stage::kClassify)) {
+    classified = classes_.classify(frame, table_, r.horizon_row, level.class_step);
+    lap(Stage::kClassify);
+  }
+  if (classified && may_run(Stage::kBall)) {
+    r.ball = ball_.detect(classes_, k, pose, level.ball_stride);
+    lap(Stage::kBall);
+  }
+  bool scanned = false;
+  if (classified && may_run(Stage::kScan)) {
+    ScanParams scan = config_.scan;
+    scan.stride = level.scan_stride;
+    r.scan = scanner_.scan(classes_, frame, k, pose, first_row_, scan, candidates_);
+    r.candidates = static_cast<int>(candidates_.size());
+    r.candidates_dropped = static_cast<int>(candidates_.dropped());
+    scanned = true;
+    lap(Stage::kScan);
+  }
+  if (scanned && may_run(Stage::kRansac)) {
+    LineSet lines;
+    ransac_.find(candidates_.points(), frame.sequence, k, pose, deadline, lines, level.max_trials, level.max_lines,
+                 level.ransac_skip);
+    r.lines = lines.lines;
+    r.line_count = lines.count;
+    r.circle = lines.circle;
+    r.ransac = lines.stats;
+    r.cut.trials_skipped = lines.stats.trials_skipped;
+    r.cut.lines_not_extracted = lines.stats.stopped_early;
+    r.cut.points_left = lines.stats.points_left;
+    if (lines.stats.stopped_early) r.cut.deadline_hit = true;
+    lap(Stage::kRansac);
+  }
+  if (!classified) {  // later stages depend on the classes
+    for (const Stage s : {Stage::kBall, Stage::kScan, Stage::kRansac}) {
+      r.cut.stages_skipped = static_cast<std::uint8_t>(r.cut.stages_skipped | (1U << static_cast<unsigned>(s)));
+    }
+  } else if (!scanned) {
+    r.cut.stages_skipped = static_cast<std::uint8_t>(r.cut.stages_skipped | (1U << static_cast<unsigned>(Stage::kRansac)));
+  }
+  r.total_time = deadline.now() - start;
+  return r;
+}
+
+}  // namespace ringlet::vision

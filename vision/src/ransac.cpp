@@ -1,0 +1,287 @@
+// RANSAC line extraction on the ground. Order of one extraction round:
+//   trials (deadline checked before each) → best hypothesis → inliers → TLS refit → inliers again
+//   → arc test (centre circle) → split at gaps → segments; then the round's inliers leave the pool.
+// After all rounds collinear segments are merged.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "ringlet/vision/prng.hpp"
+#include "ringlet/vision/ransac.hpp"
+
+namespace ringlet::vision {
+namespace {
+
+double norm(double x, double y) noexcept { return std::hypot(x, y); }
+
+}  // namespace
+
+RansacScratch::RansacScratch(std::size_t capacity) {
+  points_.reserve(capacity);
+  pixels_.reserve(capacity);
+  pool_.reserve(capacity);
+  inliers_.reserve(capacity);
+  circle_members_.reserve(capacity);
+  arc_.reserve(capacity);
+  piece_.reserve(capacity);
+  order_.reserve(capacity);
+}
+
+double RansacLineFinder::tolerance(const hal::RobotPoint& p) const noexcept {
+  return params_.inlier_base_m + params_.inlier_per_m * norm(p.x, p.y);
+}
+
+void RansacLineFinder::remove_from_pool(std::span<const int> members) noexcept {
+  // members are sorted ascending (they are collected by walking the pool, which stays sorted).
+  auto& pool = scratch_.pool_;
+  pool.erase(std::remove_if(pool.begin(), pool.end(),
+                            [&](int i) { return std::binary_search(members.begin(), members.end(), i); }),
+             pool.end());
+}
+
+void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
+                            const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials,
+                            int max_lines, int skip_override) noexcept {
+  out.count = 0;
+  out.circle = CentreCircle{};
+  out.stats = RansacStats{};
+  RansacStats& st = out.stats;
+  auto& s = scratch_;
+  s.points_.clear();
+  s.pixels_.clear();
+  s.pool_.clear();
+  const auto skip = static_cast<std::size_t>(std::max(skip_override >= 1 ? skip_override : params_.skip, 1));
+  for (std::size_t i = 0; i < candidates.size() && s.points_.size() < s.points_.capacity(); i += skip) {
+    s.pool_.push_back(static_cast<int>(s.points_.size()));
+    s.points_.push_back(candidates[i].ground);
+    s.pixels_.push_back(candidates[i].pixel);
+  }
+  st.points_in = static_cast<int>(candidates.size());
+  st.points_used = static_cast<int>(s.points_.size());
+  const int trials = max_trials >= 0 ? max_trials : params_.max_trials;
+  const int rounds_cap = std::clamp(max_lines >= 0 ? max_lines : params_.max_lines, 0, static_cast<int>(kMaxLines));
+  const auto min_inliers = static_cast<std::size_t>(std::max(params_.min_inliers, 2));
+  SplitMix64 rng = SplitMix64::for_frame(params_.seed, frame);
+
+  int rounds = 0;
+  while (rounds < rounds_cap && s.pool_.size() >= min_inliers) {
+    std::size_t best = 0;
+    Line2 best_line;
+    int t = 0;
+    for (; t < trials; ++t) {
+      if (deadline.expired()) {
+        st.stopped_early = true;
+        break;
+      }
+      ++st.trials_run;
+      const std::size_t n = s.pool_.size();
+      const auto i = static_cast<std::size_t>(rng.below(n));
+      auto j = static_cast<std::size_t>(rng.below(n - 1));
+      if (j >= i) ++j;
+      const hal::RobotPoint a = s.points_[static_cast<std::size_t>(s.pool_[i])];
+      const hal::RobotPoint b = s.points_[static_cast<std::size_t>(s.pool_[j])];
+      const double len = norm(b.x - a.x, b.y - a.y);
+      if (len < 1e-6) continue;
+      const Line2 hypothesis{a, (b.x - a.x) / len, (b.y - a.y) / len};
+      std::size_t count = 0;
+      for (const int p : s.pool_) {
+        const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
+        if (std::abs(hypothesis.signed_distance(q)) <= tolerance(q)) ++count;
+      }
+      if (count > best) {
+        best = count;
+        best_line = hypothesis;
+      }
+    }
+    st.trials_skipped += trials - t;
+    // A cut round still uses its best hypothesis so far: degrade, do not discard.
+    if (best < min_inliers) break;
+
+    const auto collect = [&](const Line2& l) {
+      s.inliers_.clear();
+      for (const int p : s.pool_) {
+        const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
+        if (std::abs(l.signed_distance(q)) <= tolerance(q)) s.inliers_.push_back(p);
+      }
+    };
+    collect(best_line);
+    Line2 line = best_line;
+    if (const auto refined = fit_line_tls({s.points_, s.inliers_})) {
+      line = *refined;
+      collect(line);
+      if (s.inliers_.size() < min_inliers) {  // the refit drifted off: keep the hypothesis
+        line = best_line;
+        collect(line);
+      }
+    }
+    ++rounds;
+    if (add_pieces(line, k, pose, out)) ++st.lines_extracted;
+    remove_from_pool(s.inliers_);
+    if (st.stopped_early) break;
+  }
+  if (st.stopped_early) st.points_left = static_cast<int>(s.pool_.size());
+  merge(out, k, pose);
+}
+
+bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept {
+  auto& s = scratch_;
+  if (piece.size() < 6) return false;
+  const IndexedPoints pts{s.points_, piece};
+  double t_min = 1e300, t_max = -1e300;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double t = line.along(pts[i]);
+    t_min = std::min(t_min, t);
+    t_max = std::max(t_max, t);
+  }
+  if (t_max - t_min > params_.circle_max_chord_m) return false;
+  const double r0 = params_.circle_radius_m;
+  const double r_tol = params_.circle_radius_tolerance * r0;
+  // Trim stray points that happen to lie in the line's band (a quarter of the piece at most):
+  // repeatedly drop the worst circle residual while it exceeds half the inlier tolerance.
+  s.arc_.assign(piece.begin(), piece.end());
+  std::optional<Circle2> circle;
+  const std::size_t max_drops = piece.size() / 4;
+  for (std::size_t drops = 0;; ++drops) {
+    circle = fit_circle({s.points_, s.arc_});
+    if (!circle) return false;
+    std::size_t worst = 0;
+    double worst_excess = 0.0;
+    for (std::size_t i = 0; i < s.arc_.size(); ++i) {
+      const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(s.arc_[i])];
+      const double excess =
+          std::abs(norm(q.x - circle->centre.x, q.y - circle->centre.y) - circle->radius) - tolerance(q) / 2.0;
+      if (excess > worst_excess) {
+        worst_excess = excess;
+        worst = i;
+      }
+    }
+    if (worst_excess <= 0.0) break;
+    if (drops == max_drops || s.arc_.size() <= 6) return false;
+    s.arc_.erase(s.arc_.begin() + static_cast<std::ptrdiff_t>(worst));
+  }
+  const IndexedPoints arc{s.points_, s.arc_};
+  if (!circle || std::abs(circle->radius - r0) > r_tol) return false;
+  const auto arc_line = fit_line_tls(arc);
+  const double lrms = arc_line ? line_rms(*arc_line, arc) : 0.0;
+  if (lrms < params_.circle_min_line_rms_m) return false;
+  if (!(circle_rms(*circle, arc) < params_.circle_rms_ratio * lrms)) return false;
+
+  // An arc. Take every remaining point on that circle and refit, until the set stops growing.
+  std::sort(s.arc_.begin(), s.arc_.end());
+  const auto gather = [&](const Circle2& c) {
+    s.circle_members_.clear();
+    for (const int p : s.pool_) {
+      const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
+      const bool on_circle = std::abs(norm(q.x - c.centre.x, q.y - c.centre.y) - c.radius) <= tolerance(q);
+      if (on_circle || std::binary_search(s.arc_.begin(), s.arc_.end(), p)) s.circle_members_.push_back(p);
+    }
+  };
+  gather(*circle);
+  for (int iteration = 0; iteration < 3; ++iteration) {
+    const std::size_t before = s.circle_members_.size();
+    const auto all = fit_circle({s.points_, s.circle_members_});
+    if (!all || std::abs(all->radius - r0) > r_tol) break;
+    circle = all;
+    gather(*circle);
+    if (s.circle_members_.size() <= before) break;
+  }
+  const auto members = static_cast<int>(s.circle_members_.size());
+  if (!out.circle.seen || members > out.circle.inliers) out.circle = {true, circle->centre, circle->radius, members};
+  ++out.stats.arcs_rejected;
+  remove_from_pool(s.circle_members_);
+  return true;
+}
+
+bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+                                  LineSet& out) noexcept {
+  auto& s = scratch_;
+  s.order_.clear();
+  for (const int p : s.inliers_) s.order_.emplace_back(line.along(s.points_[static_cast<std::size_t>(p)]), p);
+  std::sort(s.order_.begin(), s.order_.end());
+  bool any = false;
+  const auto close_piece = [&](std::size_t first, std::size_t last) {  // [first, last]
+    const auto count = static_cast<int>(last - first + 1);
+    const double t0 = s.order_[first].first;
+    const double t1 = s.order_[last].first;
+    if (count < params_.min_inliers) return;
+    // Arcs are tested per piece, so that a stray point far along the line cannot hide one.
+    s.piece_.clear();
+    for (std::size_t i = first; i <= last; ++i) s.piece_.push_back(s.order_[i].second);
+    if (try_circle(line, s.piece_, out)) return;
+    if (t1 - t0 < params_.min_length_m) return;
+    if (out.count == kMaxLines) {
+      ++out.stats.segments_dropped;
+      return;
+    }
+    any = true;
+    FieldLine& f = out.lines[out.count++];
+    f.ground_start = line.at(t0);
+    f.ground_end = line.at(t1);
+    f.length_m = t1 - t0;
+    f.inliers = count;
+    const auto p0 = hal::project(k, pose, {f.ground_start.x, f.ground_start.y, 0.0});
+    const auto p1 = hal::project(k, pose, {f.ground_end.x, f.ground_end.y, 0.0});
+    f.image_start = p0 ? *p0 : s.pixels_[static_cast<std::size_t>(s.order_[first].second)];
+    f.image_end = p1 ? *p1 : s.pixels_[static_cast<std::size_t>(s.order_[last].second)];
+  };
+  std::size_t first = 0;
+  for (std::size_t i = 1; i <= s.order_.size(); ++i) {
+    if (i == s.order_.size() || s.order_[i].first - s.order_[i - 1].first > params_.split_gap_m) {
+      if (!s.order_.empty()) close_piece(first, i - 1);
+      first = i;
+    }
+  }
+  return any;
+}
+
+void RansacLineFinder::merge(LineSet& out, const hal::CameraIntrinsics& k, const hal::CameraPose& pose) const noexcept {
+  const double cos_max = std::cos(params_.merge_angle_deg * std::numbers::pi / 180.0);
+  const auto as_line = [](const FieldLine& f) {
+    const double len = std::max(f.length_m, 1e-9);
+    return Line2{f.ground_start, (f.ground_end.x - f.ground_start.x) / len, (f.ground_end.y - f.ground_start.y) / len};
+  };
+  bool merged = true;
+  while (merged) {
+    merged = false;
+    for (std::size_t a = 0; a < out.count && !merged; ++a) {
+      for (std::size_t b = a + 1; b < out.count && !merged; ++b) {
+        const FieldLine& fa = out.lines[a];
+        const FieldLine& fb = out.lines[b];
+        const Line2 la = as_line(fa);
+        const Line2 lb = as_line(fb);
+        if (std::abs(la.dx * lb.dx + la.dy * lb.dy) < cos_max) continue;
+        if (std::abs(la.signed_distance(fb.ground_start)) > params_.merge_offset_m ||
+            std::abs(la.signed_distance(fb.ground_end)) > params_.merge_offset_m ||
+            std::abs(lb.signed_distance(fa.ground_start)) > params_.merge_offset_m ||
+            std::abs(lb.signed_distance(fa.ground_end)) > params_.merge_offset_m) {
+          continue;
+        }
+        const double tb0 = la.along(fb.ground_start);
+        const double tb1 = la.along(fb.ground_end);
+        const double gap = std::max({0.0, std::min(tb0, tb1) - fa.length_m, -std::max(tb0, tb1)});
+        if (gap > params_.split_gap_m) continue;
+        // Extend the longer segment's line over both.
+        const Line2 base = fa.length_m >= fb.length_m ? la : lb;
+        double t_min = 1e300, t_max = -1e300;
+        for (const hal::RobotPoint& p : {fa.ground_start, fa.ground_end, fb.ground_start, fb.ground_end}) {
+          t_min = std::min(t_min, base.along(p));
+          t_max = std::max(t_max, base.along(p));
+        }
+        FieldLine m = fa;
+        m.ground_start = base.at(t_min);
+        m.ground_end = base.at(t_max);
+        m.length_m = t_max - t_min;
+        m.inliers = fa.inliers + fb.inliers;
+        if (const auto p0 = hal::project(k, pose, {m.ground_start.x, m.ground_start.y, 0.0})) m.image_start = *p0;
+        if (const auto p1 = hal::project(k, pose, {m.ground_end.x, m.ground_end.y, 0.0})) m.image_end = *p1;
+        out.lines[a] = m;
+        for (std::size_t c = b + 1; c < out.count; ++c) out.lines[c - 1] = out.lines[c];
+        --out.count;
+        ++out.stats.merges;
+        merged = true;
+      }
+    }
+  }
+}
+
+}  // namespace ringlet::vision
