@@ -1,6 +1,8 @@
 #pragma once
-// The colour classes vision cares about and the one colour conversion it does (BGR → YUV).
+// The colour classes vision cares about, and the colour space it classifies in.
 #include <cstdint>
+
+#include "ringlet/hal/yuv.hpp"
 
 namespace ringlet::vision {
 
@@ -18,25 +20,9 @@ inline constexpr int kColourClassCount = 4;
   return "?";
 }
 
-struct Yuv {
-  std::uint8_t y = 0;
-  std::uint8_t u = 128;
-  std::uint8_t v = 128;
-};
-
-/// Full-range (JFIF) BT.601, the convention of the camera's YUYV: Y = 0.299 R + 0.587 G + 0.114 B,
-/// U = 128 + 0.564 (B − Y), V = 128 + 0.713 (R − Y). Fixed point (16 fractional bits, rounded) so
-/// every target gives the same bytes.
-[[nodiscard]] constexpr Yuv bgr_to_yuv(std::uint8_t b, std::uint8_t g, std::uint8_t r) noexcept {
-  const std::int32_t ri = r, gi = g, bi = b;
-  constexpr std::int32_t kHalf = 1 << 15;
-  constexpr std::int32_t kOffset = (128 << 16) + kHalf;
-  const std::int32_t y = (19595 * ri + 38470 * gi + 7471 * bi + kHalf) >> 16;
-  std::int32_t u = (-11059 * ri - 21709 * gi + 32768 * bi + kOffset) >> 16;
-  std::int32_t v = (32768 * ri - 27439 * gi - 5329 * bi + kOffset) >> 16;
-  u = u < 0 ? 0 : (u > 255 ? 255 : u);
-  v = v < 0 ? 0 : (v > 255 ? 255 : v);
-  return {static_cast<std::uint8_t>(y), static_cast<std::uint8_t>(u), static_cast<std::uint8_t>(v)};
-}
+// The camera's colour space and the one BGR → YUV conversion (full-range BT.601, fixed point),
+// shared with the camera backends so a replayed frame classifies exactly like a live one.
+using hal::Yuv;
+using hal::bgr_to_yuv;
 
 }  // namespace ringlet::vision
