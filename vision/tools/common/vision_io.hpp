@@ -1,0 +1,56 @@
+#pragma once
+// What the vision tools share: image files in (with the errors a person needs), a pipeline's
+// result as JSON and drawn over the image, and the camera options every tool takes.
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+
+#include "ringlet/hal/camera.hpp"
+#include "ringlet/vision/colour_table.hpp"
+#include "ringlet/vision/pipeline.hpp"
+
+namespace ringlet::vision::tools {
+
+class ToolError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A colour image file (PNG, JPEG, ...) as BGR; ToolError naming the file when it cannot be read
+/// or decoded, or (when width > 0) is not width × height.
+[[nodiscard]] cv::Mat load_bgr(const std::filesystem::path& file, int width = 0, int height = 0);
+
+/// A view of a BGR image for the pipeline (valid while the image lives).
+[[nodiscard]] hal::FrameView frame_view(const cv::Mat& bgr, std::uint64_t sequence = 0);
+
+/// The colour table from a file (ToolError with the loader's message), or, with an empty path,
+/// the default thresholds.
+[[nodiscard]] ColourTable load_table(const std::filesystem::path& file);
+
+/// Camera and head options shared by the tools: image size, field of view (or fx/fy/cx/cy),
+/// mount, head yaw and pitch (degrees).
+struct CameraOptions {
+  int width = 640;
+  int height = 480;
+  double hfov_deg = 57.0;
+  double vfov_deg = 44.0;
+  double fx = 0.0, fy = 0.0, cx = 0.0, cy = 0.0;  // 0: from the field of view
+  hal::CameraMount mount{};
+  double yaw_deg = 0.0;
+  double pitch_deg = 20.0;
+
+  void add_to(CLI::App& app, bool with_head = true);
+  [[nodiscard]] hal::CameraIntrinsics intrinsics() const;
+  [[nodiscard]] hal::HeadJoints head() const;
+};
+
+[[nodiscard]] nlohmann::json result_json(const VisionResult& result);
+
+/// Draws lines (green, numbered), the centre circle's points and the ball (orange) over `bgr`.
+void draw_result(cv::Mat& bgr, const VisionResult& result, const hal::CameraIntrinsics& k, const hal::CameraPose& pose);
+
+}  // namespace ringlet::vision::tools
