@@ -75,6 +75,7 @@ CameraRenderer::CameraRenderer(World world, const CameraSpec& spec, std::uint64_
       spec_(spec),
       seed_(static_cast<std::uint32_t>(seed ^ (seed >> 32))),
       bgr_(static_cast<std::size_t>(spec.intrinsics.width) * static_cast<std::size_t>(spec.intrinsics.height) * 3U),
+      labels_(static_cast<std::size_t>(spec.intrinsics.width) * static_cast<std::size_t>(spec.intrinsics.height)),
       boxes_(world_.circles.size() + 1),
       row_active_(world_.circles.size() + 1) {
   build_grid();
@@ -209,7 +210,8 @@ void CameraRenderer::render_pixels() noexcept {
     }
     const Vec3 base = add(add(axes_[2], scale((v + 0.5 - k.cy) / k.fy, axes_[1])), scale((0.5 - k.cx) / k.fx, axes_[0]));
     std::uint8_t* out = bgr_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(width) * 3U;
-    for (int u = 0; u < width; ++u, out += 3) {
+    PixelLabel* label = labels_.data() + static_cast<std::size_t>(v) * static_cast<std::size_t>(width);
+    for (int u = 0; u < width; ++u, out += 3, ++label) {
       const double fu = static_cast<double>(u);
       const Vec3 d{base.x + fu * step.x, base.y + fu * step.y, base.z + fu * step.z};
       double t_best = detail::kNoHit3;
@@ -241,6 +243,7 @@ void CameraRenderer::render_pixels() noexcept {
         if (!on_carpet) {
           const double n = unit(hash2(fast_floor(x * 20.0), fast_floor(y * 20.0), seed_));
           put(out, kFloor, light.brightness * (0.92 + 0.16 * n));
+          *label = PixelLabel::kFloor;
           continue;
         }
         bool paint = false;
@@ -265,8 +268,10 @@ void CameraRenderer::render_pixels() noexcept {
         const double lit = light.brightness * (1.0 + 0.75 * texture * coarse) * sun_factor(light, sun_cos, sun_sin, x, y);
         if (paint) {
           put(out, kPaint, lit * (1.0 + 0.3 * texture * fine));
+          *label = PixelLabel::kMarking;
         } else {
           put(out, kCarpet, lit * (1.0 + texture * fine));
+          *label = PixelLabel::kCarpet;
         }
       } else if (hit == kNothing) {
         // Above the horizon: the hall's walls and crowd, blocky variation fixed to the direction.
@@ -274,11 +279,13 @@ void CameraRenderer::render_pixels() noexcept {
         const double h1 = unit(hash2(fast_floor(d.x * inv * 40.0), fast_floor(d.y * inv * 40.0), background_seed));
         const double up = d.z * inv;  // 0 at the horizon, 1 straight up
         put(out, kBackground, light.brightness * (0.75 + 0.4 * h1) * (1.0 - 0.35 * up));
+        *label = PixelLabel::kBackground;
       } else if (static_cast<std::size_t>(hit) == ball_index) {
         ++ball_pixels_shown_;
         const Vec3 p = add(origin_, scale(t_best, d));
         const double nz = (p.z - ball_centre.z) / ball_radius;  // lit from above
         put(out, kBall, light.brightness * (0.55 + 0.45 * nz));
+        *label = PixelLabel::kBall;
       } else {
         const Circle& c = world_.circles[static_cast<std::size_t>(hit)];
         const Vec3 p = add(origin_, scale(t_best, d));
@@ -286,12 +293,17 @@ void CameraRenderer::render_pixels() noexcept {
         const double nx = (p.x - c.centre.x) / c.radius;
         const double ny = (p.y - c.centre.y) / c.radius;
         const bool cap = p.z >= c.height - 1e-9;
-        const double shade = cap ? 1.0 : 0.6 + 0.4 * std::max(0.0, 0.6 * nx + 0.8 * ny);
+        const double shade = cap ? 1.0 : 0.85 + 0.15 * (0.6 * nx + 0.8 * ny);
         Colour colour = kObstacle;
-        if (c.kind == ObstacleKind::kPost) colour = kPost;
+        *label = PixelLabel::kObstacle;
+        if (c.kind == ObstacleKind::kPost) {
+          colour = kPost;
+          *label = PixelLabel::kPost;
+        }
         if (c.kind == ObstacleKind::kRobot) {
           const double rel = p.z / c.height;
           colour = (!cap && rel >= kJerseyLow && rel <= kJerseyHigh) ? kRobotJersey : kRobotBody;
+          *label = PixelLabel::kRobot;
         }
         put(out, colour, light.brightness * shade);
       }

@@ -112,8 +112,9 @@ class WorldParser {
   void expect_args(const Statement& s, std::size_t min, std::size_t max, std::string_view usage) const {
     const std::size_t got = s.args.size();
     if (got >= min && got <= max) return;
-    const std::string count =
-        min == max ? std::to_string(min) : std::to_string(min) + " or " + std::to_string(max);
+    const std::string count = min == max       ? std::to_string(min)
+                              : max == min + 1 ? std::to_string(min) + " or " + std::to_string(max)
+                                               : std::to_string(min) + " to " + std::to_string(max);
     fail(s.line, prefix(s) + "expected " + count + (max == 1 ? " argument" : " arguments") + " (" +
                      std::string(usage) + "), got " + std::to_string(got));
   }

@@ -22,6 +22,18 @@ struct CameraSpec {
   hal::CameraMount mount{};
 };
 
+/// What each pixel shows: the renderer's exact segmentation, for tests and datasets.
+enum class PixelLabel : std::uint8_t {
+  kBackground = 0,  // nothing hit: above the horizon
+  kFloor = 1,       // ground outside the carpet (beyond the bounds)
+  kCarpet = 2,
+  kMarking = 3,     // painted line or ring
+  kBall = 4,
+  kRobot = 5,
+  kPost = 6,
+  kObstacle = 7,
+};
+
 class CameraRenderer {
  public:
   /// Copies the world and precomputes a grid of the markings. `seed` varies the carpet texture
@@ -34,6 +46,8 @@ class CameraRenderer {
 
   /// BGR8, rows top to bottom, stride = 3 · width, no padding.
   [[nodiscard]] std::span<const std::uint8_t> bgr() const noexcept { return bgr_; }
+  /// One PixelLabel per pixel, same layout as bgr() with stride = width.
+  [[nodiscard]] std::span<const PixelLabel> labels() const noexcept { return labels_; }
   [[nodiscard]] const FrameTruth& truth() const noexcept { return truth_; }
   [[nodiscard]] const CameraSpec& spec() const noexcept { return spec_; }
   [[nodiscard]] const World& world() const noexcept { return world_; }
@@ -67,6 +81,7 @@ class CameraRenderer {
   std::uint32_t seed_;
   Grid grid_;
   std::vector<std::uint8_t> bgr_;
+  std::vector<PixelLabel> labels_;
   std::vector<ScreenBox> boxes_;         // one per circle, then the ball
   std::vector<std::uint32_t> row_active_;  // obstacles whose box covers the current row
   FrameTruth truth_;
