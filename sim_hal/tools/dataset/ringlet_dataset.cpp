@@ -175,6 +175,7 @@ int run(const Options& o) {
     }
     progress(o, i + 1);
   }
+  std::cout << "ringlet-dataset: wrote " << o.count << " frames (" << o.format << " + json) to " << o.out << "\n";
   return 0;
 }
 
