@@ -47,6 +47,7 @@ void validate(const SimConfig& config) {
   require_non_negative("laser_sigma", config.laser_sigma);
   require_positive("head_max_rate", config.head_max_rate);
   require_non_negative("battery_volts", config.battery_volts);
+  if (config.camera.enabled) validate(config.camera);
 }
 
 }  // namespace ringlet::sim

@@ -41,10 +41,17 @@ SimRobot::SimRobot(World world, const SimConfig& config)
                                 detail::format_number(state_.pose.y) +
                                 ") collides with an obstacle or the bounds");
   }
+  if (config_.camera.enabled) camera_ = std::make_unique<SimCamera>(world_, config_.camera, config_.seed);
 }
+
+SimRobot::~SimRobot() = default;
+
+const FrameTruth* SimRobot::camera_truth() const noexcept { return camera_ ? camera_->latest_truth() : nullptr; }
 
 bool SimRobot::read(hal::SensorFrame& out) noexcept {
   step();
+  // The camera sees the true state at the end of the step (before any measurement noise).
+  if (camera_) camera_->on_step(steps_, time_, state_.pose, head_);
   measure(out);
   return true;
 }

@@ -91,13 +91,17 @@ class WorldParser {
       polygon(s);
     } else if (s.keyword == "marking") {
       marking(s);
+    } else if (s.keyword == "ring") {
+      ring(s);
+    } else if (s.keyword == "lighting") {
+      lighting(s);
     } else if (s.keyword == "ball") {
       ball(s);
     } else if (s.keyword == "goal") {
       goal(s);
     } else {
       fail(s.line, "unknown keyword '" + std::string(s.keyword) +
-                       "' (expected name, bounds, start, circle, polygon, marking, ball or goal)");
+                       "' (expected name, bounds, start, circle, polygon, marking, ring, lighting, ball or goal)");
     }
   }
 
@@ -108,8 +112,9 @@ class WorldParser {
   void expect_args(const Statement& s, std::size_t min, std::size_t max, std::string_view usage) const {
     const std::size_t got = s.args.size();
     if (got >= min && got <= max) return;
-    const std::string count =
-        min == max ? std::to_string(min) : std::to_string(min) + " or " + std::to_string(max);
+    const std::string count = min == max       ? std::to_string(min)
+                              : max == min + 1 ? std::to_string(min) + " or " + std::to_string(max)
+                                               : std::to_string(min) + " to " + std::to_string(max);
     fail(s.line, prefix(s) + "expected " + count + (max == 1 ? " argument" : " arguments") + " (" +
                      std::string(usage) + "), got " + std::to_string(got));
   }
@@ -156,11 +161,12 @@ class WorldParser {
     expect_args(s, 1, 1, "version");
     const std::optional<int> version = detail::parse_integer(s.args[0]);
     if (!version) fail(s.line, prefix(s) + "version must be an integer, got '" + as_written(s.args[0]) + "'");
-    if (*version != World::kFormatVersion) {
-      fail(s.line, prefix(s) + "unsupported version " + std::to_string(*version) + " (this build reads version " +
-                       std::to_string(World::kFormatVersion) + ")");
+    if (*version < World::kMinFormatVersion || *version > World::kFormatVersion) {
+      fail(s.line, prefix(s) + "unsupported version " + std::to_string(*version) + " (this build reads versions " +
+                       std::to_string(World::kMinFormatVersion) + " to " + std::to_string(World::kFormatVersion) + ")");
     }
     header_line_ = s.line;
+    version_ = *version;
   }
 
   void name(const Statement& s) {
@@ -199,10 +205,71 @@ class WorldParser {
     start_line_ = s.line;
   }
 
+  /// Statements and arguments added by format version 2 are refused in a version 1 file, so a
+  /// version 1 file means exactly what it meant before.
+  void require_version_2(const Statement& s, std::string_view what) const {
+    if (version_ >= 2) return;
+    fail(s.line, prefix(s) + std::string(what) + " needs format version 2 (the header on line " +
+                     std::to_string(header_line_) + " says " + std::to_string(version_) + ")");
+  }
+
+  double in_range(const Statement& s, std::size_t index, std::string_view what, double lo, double hi,
+                  std::string_view rule) const {
+    const double value = number(s, index, what);
+    if (!(value >= lo && value <= hi)) {
+      fail(s.line, prefix(s) + std::string(what) + " must be " + std::string(rule) + ", got " + as_written(s.args[index]));
+    }
+    return value;
+  }
+
   void circle(const Statement& s) {
-    expect_args(s, 3, 3, "x y radius");
-    const Vec2 centre = point(s, 0, "x", "y", "centre");
-    world_.circles.push_back(Circle{centre, positive(s, 2, "radius")});
+    expect_args(s, 3, 5, "x y radius [height [kind]]");
+    if (s.args.size() > 3) require_version_2(s, "height and kind");
+    Circle result;
+    result.centre = point(s, 0, "x", "y", "centre");
+    result.radius = positive(s, 2, "radius");
+    if (s.args.size() >= 4) result.height = positive(s, 3, "height");
+    if (s.args.size() == 5) {
+      const Token& kind = s.args[4];
+      if (!kind.quoted && kind.text == "robot") {
+        result.kind = ObstacleKind::kRobot;
+      } else if (!kind.quoted && kind.text == "post") {
+        result.kind = ObstacleKind::kPost;
+      } else if (!kind.quoted && kind.text == "obstacle") {
+        result.kind = ObstacleKind::kObstacle;
+      } else {
+        fail(s.line, prefix(s) + "kind must be robot, post or obstacle, got '" + as_written(kind) + "'");
+      }
+    }
+    world_.circles.push_back(result);
+  }
+
+  void ring(const Statement& s) {
+    require_version_2(s, "this statement");
+    expect_args(s, 3, 4, "x y radius [width]");
+    Ring result;
+    result.centre = point(s, 0, "x", "y", "centre");
+    result.radius = positive(s, 2, "radius");
+    if (s.args.size() == 4) result.width = positive(s, 3, "width");
+    if (!(result.width < 2.0 * result.radius)) {
+      fail(s.line, prefix(s) + "width must be < the diameter (2 x radius)");
+    }
+    world_.rings.push_back(result);
+  }
+
+  void lighting(const Statement& s) {
+    require_version_2(s, "this statement");
+    if (lighting_line_ != 0) duplicate(s, lighting_line_);
+    expect_args(s, 5, 6, "brightness texture sun_strength sun_period sun_angle_deg [sun_phase]");
+    Lighting result;
+    result.brightness = in_range(s, 0, "brightness", 0.05, 4.0, "in [0.05, 4]");
+    result.texture = in_range(s, 1, "texture", 0.0, 1.0, "in [0, 1]");
+    result.sun_strength = in_range(s, 2, "sun_strength", 0.0, 0.9, "in [0, 0.9]");
+    result.sun_period = positive(s, 3, "sun_period");
+    result.sun_angle = hal::deg_to_rad(number(s, 4, "sun_angle_deg"));
+    if (s.args.size() == 6) result.sun_phase = number(s, 5, "sun_phase");
+    world_.lighting = result;
+    lighting_line_ = s.line;
   }
 
   void polygon(const Statement& s) {
@@ -287,6 +354,8 @@ class WorldParser {
   int bounds_line_ = 0;
   int start_line_ = 0;
   int ball_line_ = 0;
+  int lighting_line_ = 0;
+  int version_ = 0;
   std::string bounds_text_;
   std::vector<PlacedPoint> placed_;
 };

@@ -97,11 +97,14 @@ struct BadWorld {
 
 // Lines 1-4 of a valid world; most cases append their bad line as line 5.
 const std::string kHead = "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0\ngoal 5 5\n";
+const std::string kHead2 = "ringlet-world 2\nbounds 0 0 10 10\nstart 1 1 0\ngoal 5 5\n";
 
 const BadWorld kBadWorlds[] = {
     {"unknown_keyword", kHead + "cirle 1 2 3\n", "t.world:5: ", "unknown keyword 'cirle'"},
     {"quoted_keyword", kHead + "\"circle\" 1 2 3\n", "t.world:5: ", "unknown keyword \"circle\""},
-    {"too_few_arguments", kHead + "circle 1 2\n", "t.world:5: ", "circle: expected 3 arguments (x y radius), got 2"},
+    {"too_few_arguments", kHead + "goal 1\n", "t.world:5: ", "goal: expected 2 arguments (x y), got 1"},
+    {"circle_too_few", kHead + "circle 1 2\n", "t.world:5: ",
+     "circle: expected 3 to 5 arguments (x y radius [height [kind]]), got 2"},
     {"too_many_arguments", kHead + "goal 1 2 3\n", "t.world:5: ", "goal: expected 2 arguments (x y), got 3"},
     {"optional_argument_count", kHead + "marking 1 1 2\n", "t.world:5: ",
      "marking: expected 4 or 5 arguments (x1 y1 x2 y2 [width]), got 3"},
@@ -133,12 +136,44 @@ const BadWorld kBadWorlds[] = {
     {"unterminated_string", kHead + "name \"Court\n", "t.world:5: ", "unterminated quoted string"},
     {"text_after_string", kHead + "name \"Court\"yard\n", "t.world:5: ", "unexpected text right after a quoted string"},
     {"missing_header", "bounds 0 0 10 10\nstart 1 1 0\ngoal 5 5\n", "t.world:1: ",
-     "missing header: the first line must be 'ringlet-world 1', got 'bounds'"},
+     "missing header: the first line must be 'ringlet-world 2', got 'bounds'"},
     {"missing_header_after_comments", "# a world\n\n   \nbounds 0 0 10 10\n", "t.world:4: ", "missing header"},
-    {"empty_file", "", "t.world:1: ", "end of file: missing header 'ringlet-world 1'"},
+    {"empty_file", "", "t.world:1: ", "end of file: missing header 'ringlet-world 2'"},
     {"only_comments", "# nothing\n# here\n", "t.world:2: ", "end of file: missing header"},
-    {"unsupported_version", "ringlet-world 2\nbounds 0 0 10 10\n", "t.world:1: ",
-     "ringlet-world: unsupported version 2 (this build reads version 1)"},
+    {"unsupported_version", "ringlet-world 3\nbounds 0 0 10 10\n", "t.world:1: ",
+     "ringlet-world: unsupported version 3 (this build reads versions 1 to 2)"},
+    {"version_zero", "ringlet-world 0\n", "t.world:1: ", "ringlet-world: unsupported version 0"},
+    // Format version 2 statements: refused in a version 1 file, checked in a version 2 file.
+    {"ring_in_version_1", kHead + "ring 5 5 1\n", "t.world:5: ",
+     "ring: this statement needs format version 2 (the header on line 1 says 1)"},
+    {"lighting_in_version_1", kHead + "lighting 1 0.1 0.2 2 30\n", "t.world:5: ",
+     "lighting: this statement needs format version 2"},
+    {"circle_height_in_version_1", kHead + "circle 5 5 0.2 0.58\n", "t.world:5: ",
+     "circle: height and kind needs format version 2"},
+    {"circle_bad_kind", kHead2 + "circle 5 5 0.2 0.58 tree\n", "t.world:5: ",
+     "circle: kind must be robot, post or obstacle, got 'tree'"},
+    {"circle_quoted_kind", kHead2 + "circle 5 5 0.2 0.58 \"robot\"\n", "t.world:5: ",
+     "circle: kind must be robot, post or obstacle, got '\"robot\"'"},
+    {"circle_zero_height", kHead2 + "circle 5 5 0.2 0\n", "t.world:5: ", "circle: height must be > 0, got 0"},
+    {"circle_too_many", kHead2 + "circle 5 5 0.2 0.5 robot 1\n", "t.world:5: ",
+     "circle: expected 3 to 5 arguments (x y radius [height [kind]]), got 6"},
+    {"ring_arguments", kHead2 + "ring 5 5\n", "t.world:5: ", "ring: expected 3 or 4 arguments (x y radius [width]), got 2"},
+    {"ring_radius", kHead2 + "ring 5 5 -0.75\n", "t.world:5: ", "ring: radius must be > 0, got -0.75"},
+    {"ring_width", kHead2 + "ring 5 5 0.75 0\n", "t.world:5: ", "ring: width must be > 0, got 0"},
+    {"ring_width_too_wide", kHead2 + "ring 5 5 0.02\n", "t.world:5: ", "ring: width must be < the diameter"},
+    {"ring_outside", kHead2 + "ring 12 5 1\n", "t.world:5: ", "ring: centre (12, 5) is outside the bounds"},
+    {"lighting_arguments", kHead2 + "lighting 1 0.1 0.2\n", "t.world:5: ",
+     "lighting: expected 5 or 6 arguments (brightness texture sun_strength sun_period sun_angle_deg [sun_phase]), got 3"},
+    {"lighting_brightness", kHead2 + "lighting 0 0.1 0.2 2 30\n", "t.world:5: ",
+     "lighting: brightness must be in [0.05, 4], got 0"},
+    {"lighting_texture", kHead2 + "lighting 1 1.5 0.2 2 30\n", "t.world:5: ", "lighting: texture must be in [0, 1], got 1.5"},
+    {"lighting_sun", kHead2 + "lighting 1 0.1 0.95 2 30\n", "t.world:5: ",
+     "lighting: sun_strength must be in [0, 0.9], got 0.95"},
+    {"lighting_period", kHead2 + "lighting 1 0.1 0.2 -2 30\n", "t.world:5: ", "lighting: sun_period must be > 0, got -2"},
+    {"lighting_angle", kHead2 + "lighting 1 0.1 0.2 2 east\n", "t.world:5: ",
+     "lighting: sun_angle_deg is not a number: 'east'"},
+    {"lighting_twice", kHead2 + "lighting 1 0.1 0.2 2 30\nlighting 1 0.1 0.2 2 30\n", "t.world:6: ",
+     "lighting: given twice (first on line 5)"},
     {"fractional_version", "ringlet-world 1.0\n", "t.world:1: ", "ringlet-world: version must be an integer, got '1.0'"},
     {"missing_version", "ringlet-world\n", "t.world:1: ", "ringlet-world: expected 1 argument (version), got 0"},
     {"missing_bounds", "ringlet-world 1\nstart 1 1 0\ngoal 2 2\n", "t.world:3: ", "end of file: missing 'bounds"},
@@ -187,6 +222,43 @@ TEST_P(SimWorldParserRejects, WithPositionAndReason) {
 
 INSTANTIATE_TEST_SUITE_P(SimWorldParser, SimWorldParserRejects, testing::ValuesIn(kBadWorlds),
                          [](const testing::TestParamInfo<BadWorld>& param) { return std::string(param.param.name); });
+
+TEST(SimWorldParser, Version2ReadsRingsLightingAndObstacleHeights) {
+  const World world = parse_world(kHead2 +
+                                      "circle 2 2 0.3\n"
+                                      "circle 3 3 0.15 0.58 robot\n"
+                                      "circle 4 4 0.05 0.8 post\n"
+                                      "circle 6 6 0.5 1.2\n"
+                                      "ring 5 5 0.75\n"
+                                      "ring 5 5 1 0.1\n"
+                                      "lighting 0.9 0.1 0.3 2.5 45 0.25\n",
+                                  "t.world");
+  ASSERT_EQ(world.circles.size(), 4U);
+  EXPECT_EQ(world.circles[0].height, 0.58);  // the default: a NAO's height
+  EXPECT_EQ(world.circles[0].kind, ObstacleKind::kObstacle);
+  EXPECT_EQ(world.circles[1].kind, ObstacleKind::kRobot);
+  EXPECT_EQ(world.circles[2].kind, ObstacleKind::kPost);
+  EXPECT_EQ(world.circles[2].height, 0.8);
+  EXPECT_EQ(world.circles[3].height, 1.2);
+  EXPECT_EQ(world.circles[3].kind, ObstacleKind::kObstacle);
+  ASSERT_EQ(world.rings.size(), 2U);
+  EXPECT_EQ(world.rings[0].radius, 0.75);
+  EXPECT_EQ(world.rings[0].width, 0.05);
+  EXPECT_EQ(world.rings[1].width, 0.1);
+  EXPECT_EQ(world.lighting.brightness, 0.9);
+  EXPECT_EQ(world.lighting.texture, 0.1);
+  EXPECT_EQ(world.lighting.sun_strength, 0.3);
+  EXPECT_EQ(world.lighting.sun_period, 2.5);
+  EXPECT_DOUBLE_EQ(world.lighting.sun_angle, std::numbers::pi / 4.0);
+  EXPECT_EQ(world.lighting.sun_phase, 0.25);
+}
+
+TEST(SimWorldParser, Version1FilesKeepTheirMeaning) {
+  const World world = parse_world(kHead + "circle 2 2 0.3\n", "t.world");
+  EXPECT_TRUE(world.rings.empty());
+  EXPECT_EQ(world.lighting.sun_strength, 0.0);  // no stripes unless asked for
+  EXPECT_EQ(world.circles[0].height, 0.58);
+}
 
 TEST(SimWorldParser, MessageIsExactlySourceLineMessage) {
   try {

@@ -2,14 +2,17 @@
 // The simulated robot: a hal::Robot backend over a World. Lockstep: every Sensors::read() advances
 // the world by exactly one executive period, then measures it, so a run depends only on the
 // world, the configuration and the seed — never on how fast the host is or which clock paces it.
-// One seeded RNG (std::mt19937_64) feeds all noise.
+// One seeded RNG (std::mt19937_64) feeds all noise. The optional camera renders on its own thread
+// with one camera period of latency, so it stays deterministic too (sim_camera.hpp).
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <random>
 
 #include "ringlet/hal/robot.hpp"
 #include "ringlet/sim/kinematics.hpp"
+#include "ringlet/sim/sim_camera.hpp"
 #include "ringlet/sim/world.hpp"
 
 namespace ringlet::sim {
@@ -27,21 +30,27 @@ struct SimConfig {
   double laser_sigma = 0.0;       // m, Gaussian noise on valid ranges
   double head_max_rate = 4.0;     // rad/s the simulated head joints can move
   double battery_volts = 12.6;    // start voltage; drains slowly with distance driven
+  SimCameraConfig camera{};       // off by default: rendering needs a thread and a few ms a frame
 };
 
-/// Throws std::invalid_argument naming the field when a value is out of range.
+/// Throws std::invalid_argument naming the field when a value is out of range (the camera's
+/// fields only when it is enabled).
 void validate(const SimConfig& config);
 
 class SimRobot final : public hal::Robot, private hal::Sensors, private hal::Actuators {
  public:
   /// Validates the configuration and checks the start pose is collision-free (throws otherwise).
   SimRobot(World world, const SimConfig& config);
+  ~SimRobot() override;  // joins the camera's render thread, if any
+  SimRobot(const SimRobot&) = delete;
+  SimRobot& operator=(const SimRobot&) = delete;
 
   // hal::Robot
   [[nodiscard]] std::string_view backend_name() const noexcept override { return "sim"; }
   hal::Sensors& sensors() noexcept override { return *this; }
   hal::Actuators& actuators() noexcept override { return *this; }
-  hal::Camera* camera() noexcept override { return nullptr; }
+  /// The simulated head camera when SimConfig::camera.enabled, otherwise null.
+  hal::Camera* camera() noexcept override { return camera_.get(); }
 
   // Ground truth, for telemetry, pictures and tests (never for the controller's logic).
   [[nodiscard]] const World& world() const noexcept { return world_; }
@@ -53,6 +62,11 @@ class SimRobot final : public hal::Robot, private hal::Sensors, private hal::Act
   [[nodiscard]] const SimConfig& config() const noexcept { return config_; }
   /// Where the world's ball really is in the robot frame (none when the world has no ball).
   [[nodiscard]] std::optional<hal::RobotPoint> true_ball_in_robot_frame() const noexcept;
+  /// Ground truth of the camera frame grab_latest() returns now (null without a camera or before
+  /// the first frame is delivered). Sim-only: valid until the next read().
+  [[nodiscard]] const FrameTruth* camera_truth() const noexcept;
+  /// The simulated camera itself (null when disabled), for its sim-only statistics.
+  [[nodiscard]] const SimCamera* sim_camera() const noexcept { return camera_.get(); }
 
  private:
   // hal::Sensors
@@ -79,6 +93,7 @@ class SimRobot final : public hal::Robot, private hal::Sensors, private hal::Act
   std::uint64_t collisions_ = 0;
   double distance_ = 0.0;           // path length driven, |v| dt summed: battery drain, statistics
   double odometry_distance_ = 0.0;  // v dt summed, signed like hal::WheelOdometry::distance
+  std::unique_ptr<SimCamera> camera_;  // last: its thread starts once everything else exists
 };
 
 }  // namespace ringlet::sim

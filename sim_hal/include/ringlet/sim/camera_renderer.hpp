@@ -1,0 +1,96 @@
+#pragma once
+// The simulated head camera's picture: a ray per pixel through hal/camera_geometry.hpp's pinhole
+// model, against the world's obstacle cylinders, the ball and the painted, lit carpet; plus the
+// frame's ground truth (what of every line, ring and the ball is really visible).
+// Deterministic (integer-hash noise only, no <random> distributions) and allocation-free per
+// frame: every buffer is sized in the constructor.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/hal/geometry.hpp"
+#include "ringlet/sim/camera_truth.hpp"
+#include "ringlet/sim/world.hpp"
+
+namespace ringlet::sim {
+
+/// The camera being simulated: intrinsics (image size included) and where it sits on the head.
+struct CameraSpec {
+  hal::CameraIntrinsics intrinsics = hal::CameraIntrinsics::nao();
+  hal::CameraMount mount{};
+};
+
+/// What each pixel shows: the renderer's exact segmentation, for tests and datasets.
+enum class PixelLabel : std::uint8_t {
+  kBackground = 0,  // nothing hit: above the horizon
+  kFloor = 1,       // ground outside the carpet (beyond the bounds)
+  kCarpet = 2,
+  kMarking = 3,     // painted line or ring
+  kBall = 4,
+  kRobot = 5,
+  kPost = 6,
+  kObstacle = 7,
+};
+
+class CameraRenderer {
+ public:
+  /// Copies the world and precomputes a grid of the markings. `seed` varies the carpet texture
+  /// and the background; the same seed always gives the same pictures.
+  CameraRenderer(World world, const CameraSpec& spec, std::uint64_t seed);
+
+  /// Renders the view from the true robot pose `pose` with the head at `head` into bgr(), and
+  /// the ground truth into truth(). Never allocates.
+  void render(const hal::Pose2& pose, const hal::HeadJoints& head) noexcept;
+
+  /// BGR8, rows top to bottom, stride = 3 · width, no padding.
+  [[nodiscard]] std::span<const std::uint8_t> bgr() const noexcept { return bgr_; }
+  /// One PixelLabel per pixel, same layout as bgr() with stride = width.
+  [[nodiscard]] std::span<const PixelLabel> labels() const noexcept { return labels_; }
+  [[nodiscard]] const FrameTruth& truth() const noexcept { return truth_; }
+  [[nodiscard]] const CameraSpec& spec() const noexcept { return spec_; }
+  [[nodiscard]] const World& world() const noexcept { return world_; }
+
+  /// Changes the carpet's lighting for the next renders (the dataset tool varies it per frame).
+  void set_lighting(const Lighting& lighting) noexcept { world_.lighting = lighting; }
+
+  /// Capacity for visible line runs: every line may be cut into pieces by each obstacle and the
+  /// ball. More runs than this are dropped and FrameTruth::lines_truncated is set.
+  [[nodiscard]] std::size_t line_run_capacity() const noexcept { return truth_.lines.capacity(); }
+
+ private:
+  struct Grid {
+    double x0 = 0.0, y0 = 0.0, cell = 0.25;
+    int nx = 0, ny = 0;
+    std::vector<std::uint32_t> first;  // per cell: start in `items`, plus one end entry
+    std::vector<std::uint32_t> items;  // marking index, or ring index | kRingBit
+  };
+  struct ScreenBox {
+    int u0 = 0, u1 = -1, v0 = 0, v1 = -1;  // inclusive pixel ranges; empty when u1 < u0
+  };
+
+  void build_grid();
+  void render_pixels() noexcept;
+  void compute_obstacle_boxes() noexcept;
+  void compute_truth() noexcept;  // camera_truth.cpp
+  [[nodiscard]] bool sample_visible(const hal::Vec3& ground, hal::Pixel& px) const noexcept;
+
+  World world_;
+  CameraSpec spec_;
+  std::uint32_t seed_;
+  Grid grid_;
+  std::vector<std::uint8_t> bgr_;
+  std::vector<PixelLabel> labels_;
+  std::vector<ScreenBox> boxes_;         // one per circle, then the ball
+  std::vector<std::uint32_t> row_active_;  // obstacles whose box covers the current row
+  FrameTruth truth_;
+  // This frame's camera in the world frame.
+  hal::Pose2 pose_{};
+  hal::Vec3 origin_{};
+  std::array<hal::Vec3, 3> axes_{};
+  std::uint64_t ball_pixels_ = 0;        // rays that meet the ball, occluded or not
+  std::uint64_t ball_pixels_shown_ = 0;  // of those, where the ball is the nearest thing
+};
+
+}  // namespace ringlet::sim

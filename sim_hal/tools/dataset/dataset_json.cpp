@@ -1,0 +1,85 @@
+// Ground truth as JSON: every length in metres, angles in radians, pixels as doubles with (0, 0)
+// the top-left corner of the top-left pixel (hal/camera_geometry.hpp's convention).
+#include "dataset_json.hpp"
+
+namespace ringlet::sim::dataset {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json pair(double a, double b) { return Json::array({a, b}); }
+Json vec3(const hal::Vec3& v) { return Json::array({v.x, v.y, v.z}); }
+
+}  // namespace
+
+Json frame_json(const FrameRecord& record, const CameraRenderer& renderer) {
+  const FrameTruth& truth = renderer.truth();
+  const CameraSpec& spec = renderer.spec();
+  const World& world = renderer.world();
+  const hal::CameraIntrinsics& k = spec.intrinsics;
+  const hal::CameraPose camera = hal::CameraPose::from_head(spec.mount, truth.head);
+
+  Json j;
+  j["frame"] = record.index;
+  j["image"] = record.image;
+  j["format"] = record.format;
+  j["seed"] = record.seed;
+  j["world"] = world.name;
+  j["pose"] = {{"x", truth.pose.x}, {"y", truth.pose.y}, {"theta", truth.pose.theta}};
+  j["head"] = {{"yaw", truth.head.yaw}, {"pitch", truth.head.pitch}};
+  j["intrinsics"] = {{"width", k.width}, {"height", k.height}, {"fx", k.fx}, {"fy", k.fy}, {"cx", k.cx}, {"cy", k.cy}};
+  j["mount"] = {{"pivot_height", spec.mount.pivot_height}, {"forward", spec.mount.forward}, {"up", spec.mount.up}};
+  j["camera_in_robot"] = {{"position", vec3(camera.position)},
+                          {"axes", Json::array({vec3(camera.axes[0]), vec3(camera.axes[1]), vec3(camera.axes[2])})}};
+  const Lighting& l = world.lighting;
+  j["lighting"] = {{"brightness", l.brightness}, {"texture", l.texture},   {"sun_strength", l.sun_strength},
+                   {"sun_period", l.sun_period}, {"sun_angle", l.sun_angle}, {"sun_phase", l.sun_phase}};
+
+  Json lines = Json::array();
+  for (const LineRunTruth& run : truth.lines) {
+    const Marking& m = world.markings[run.marking];
+    lines.push_back({{"marking", run.marking},
+                     {"world", Json::array({pair(m.a.x, m.a.y), pair(m.b.x, m.b.y)})},
+                     {"width", m.width},
+                     {"image", Json::array({pair(run.image_a.u, run.image_a.v), pair(run.image_b.u, run.image_b.v)})},
+                     {"ground", Json::array({pair(run.ground_a.x, run.ground_a.y), pair(run.ground_b.x, run.ground_b.y)})}});
+  }
+  j["lines"] = std::move(lines);
+  j["lines_truncated"] = truth.lines_truncated;
+
+  Json rings = Json::array();
+  for (const RingTruth& r : truth.rings) {
+    const Ring& ring = world.rings[r.ring];
+    const hal::RobotPoint c = hal::to_robot_frame(truth.pose, ring.centre.x, ring.centre.y);
+    rings.push_back({{"ring", r.ring},
+                     {"centre", pair(c.x, c.y)},
+                     {"radius", ring.radius},
+                     {"visible", r.visible},
+                     {"visible_fraction", r.visible_fraction}});
+  }
+  j["rings"] = std::move(rings);
+
+  const BallTruth& b = truth.ball;
+  if (b.present) {
+    j["ball"] = {{"visible", b.visible},
+                 {"position", pair(b.position.x, b.position.y)},
+                 {"radius", world.ball->radius},
+                 {"in_front", b.in_front},
+                 {"image_centre", pair(b.image_centre.u, b.image_centre.v)},
+                 {"image_radius", b.image_radius},
+                 {"visible_fraction", b.visible_fraction}};
+  } else {
+    j["ball"] = nullptr;
+  }
+
+  Json occluders = Json::array();
+  for (const Circle& c : record.occluders) {
+    const hal::RobotPoint p = hal::to_robot_frame(truth.pose, c.centre.x, c.centre.y);
+    occluders.push_back({{"world", pair(c.centre.x, c.centre.y)}, {"robot", pair(p.x, p.y)},
+                         {"radius", c.radius}, {"height", c.height}});
+  }
+  j["occluders"] = std::move(occluders);
+  return j;
+}
+
+}  // namespace ringlet::sim::dataset

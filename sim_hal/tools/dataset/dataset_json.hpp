@@ -1,0 +1,21 @@
+#pragma once
+// The JSON record written next to each dataset image: what was rendered and its ground truth.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ringlet/sim/camera_renderer.hpp"
+
+namespace ringlet::sim::dataset {
+
+struct FrameRecord {
+  int index = 0;
+  std::string image;      // file name of the picture, next to the JSON file
+  std::string format;     // "png" (BGR) or "yuyv" (raw YUYV bytes)
+  std::uint64_t seed = 0;
+  std::vector<Circle> occluders;  // robots added to the world for this frame only
+};
+
+[[nodiscard]] nlohmann::ordered_json frame_json(const FrameRecord& record, const CameraRenderer& renderer);
+
+}  // namespace ringlet::sim::dataset

@@ -1,0 +1,53 @@
+// The simulated camera's render time per 640×480 frame on the SPL field (target: < 10 ms on one
+// core in release), with and without the BT.601 YUYV conversion, and the ground truth's share.
+#include <benchmark/benchmark.h>
+
+#include <vector>
+
+#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim/pixel_format.hpp"
+
+namespace {
+
+using namespace ringlet;
+
+sim::CameraRenderer make_renderer() {
+  return sim::CameraRenderer(sim::load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"), sim::CameraSpec{}, 7);
+}
+
+// A typical view: from the own half towards the centre circle, a robot and the ball in view.
+const hal::Pose2 kPose{-2.0, -0.4, hal::deg_to_rad(80.0)};
+const hal::HeadJoints kHead{0.1, 0.3};
+
+void BM_RenderSplField(benchmark::State& state) {
+  sim::CameraRenderer renderer = make_renderer();
+  for (auto _ : state) {
+    renderer.render(kPose, kHead);
+    benchmark::DoNotOptimize(renderer.bgr().data());
+  }
+}
+BENCHMARK(BM_RenderSplField)->Unit(benchmark::kMillisecond);
+
+void BM_RenderSplFieldLookingUp(benchmark::State& state) {
+  sim::CameraRenderer renderer = make_renderer();
+  for (auto _ : state) {
+    renderer.render(kPose, hal::HeadJoints{0.0, -0.1});  // half the picture above the horizon
+    benchmark::DoNotOptimize(renderer.bgr().data());
+  }
+}
+BENCHMARK(BM_RenderSplFieldLookingUp)->Unit(benchmark::kMillisecond);
+
+void BM_BgrToYuyv(benchmark::State& state) {
+  sim::CameraRenderer renderer = make_renderer();
+  renderer.render(kPose, kHead);
+  std::vector<std::uint8_t> yuyv(640U * 480U * 2U);
+  for (auto _ : state) {
+    sim::bgr_to_yuyv(renderer.bgr(), 640, 480, yuyv);
+    benchmark::DoNotOptimize(yuyv.data());
+  }
+}
+BENCHMARK(BM_BgrToYuyv)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,90 @@
+// The simulated camera allocates nothing per frame: rendering, ground truth, the hand-over to the
+// render thread and delivery all use buffers sized at construction. Every operator new in the
+// process (the render thread's too) is counted; the counter replaces the global allocation
+// functions for this test binary only.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim/sim_robot.hpp"
+
+namespace {
+std::atomic<bool> g_counting{false};
+std::atomic<std::uint64_t> g_allocations{0};
+
+void* counted_alloc(std::size_t size) {
+  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+}  // namespace
+
+void* operator new(std::size_t size) { return counted_alloc(size); }
+void* operator new[](std::size_t size) { return counted_alloc(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace ringlet::sim {
+namespace {
+
+class AllocationCounter {
+ public:
+  AllocationCounter() {
+    g_allocations.store(0);
+    g_counting.store(true);
+  }
+  ~AllocationCounter() { g_counting.store(false); }
+  AllocationCounter(const AllocationCounter&) = delete;
+  AllocationCounter& operator=(const AllocationCounter&) = delete;
+  [[nodiscard]] std::uint64_t count() const { return g_allocations.load(); }
+};
+
+World spl_field() { return load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"); }
+
+TEST(SimCameraNoAllocation, TheCounterSeesAnAllocation) {
+  AllocationCounter counter;
+  auto v = std::make_unique<std::vector<int>>(100, 1);
+  EXPECT_GE(counter.count(), 2U);
+  EXPECT_EQ(v->size(), 100U);
+}
+
+TEST(SimCameraNoAllocation, RenderingAllocatesNothing) {
+  CameraRenderer renderer(spl_field(), CameraSpec{}, 1);
+  AllocationCounter counter;
+  for (int i = 0; i < 20; ++i) {
+    renderer.render(hal::Pose2{-3.0 + 0.3 * i, -0.5, 0.1 * i}, hal::HeadJoints{0.05 * i - 0.5, 0.3});
+  }
+  EXPECT_EQ(counter.count(), 0U);
+  EXPECT_FALSE(renderer.truth().lines.empty());
+}
+
+TEST(SimCameraNoAllocation, SimRobotWithCameraAllocatesNothingInTheCycle) {
+  SimConfig config;
+  config.camera.enabled = true;
+  SimRobot robot(spl_field(), config);
+  hal::SensorFrame frame;
+  hal::FrameView view;
+  hal::ActuatorCommand cmd;
+  cmd.drive = {0.3, 0.8};
+  cmd.head = {0.5, 0.3};
+  robot.actuators().write(cmd);
+  AllocationCounter counter;
+  std::uint64_t delivered = 0;
+  for (int step = 0; step < 90; ++step) {
+    robot.sensors().read(frame);
+    if (robot.camera()->grab_latest(view)) delivered = view.sequence;
+    (void)robot.camera_truth();
+  }
+  EXPECT_EQ(counter.count(), 0U);
+  EXPECT_EQ(delivered, 29U);
+}
+
+}  // namespace
+}  // namespace ringlet::sim
