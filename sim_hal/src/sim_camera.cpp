@@ -8,7 +8,7 @@
 #include <string>
 
 #include "number_text.hpp"
-#include "ringlet/sim/pixel_format.hpp"
+#include "ringlet/hal/yuv.hpp"
 
 namespace ringlet::sim {
 namespace {
@@ -116,7 +116,7 @@ void SimCamera::render_loop() noexcept {
     Slot& s = slots_[static_cast<std::size_t>(job.slot)];
     const auto bgr = renderer_.bgr();
     if (config_.format == hal::PixelFormat::kYuyv) {
-      bgr_to_yuyv(bgr, config_.intrinsics.width, config_.intrinsics.height, s.pixels);
+      hal::bgr_to_yuyv(bgr, config_.intrinsics.width, config_.intrinsics.height, s.pixels);
     } else {
       std::copy(bgr.begin(), bgr.end(), s.pixels.begin());
     }

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "ringlet/sim/camera_renderer.hpp"
-#include "ringlet/sim/pixel_format.hpp"
+#include "ringlet/hal/yuv.hpp"
 
 namespace {
 
@@ -42,7 +42,7 @@ void BM_BgrToYuyv(benchmark::State& state) {
   renderer.render(kPose, kHead);
   std::vector<std::uint8_t> yuyv(640U * 480U * 2U);
   for (auto _ : state) {
-    sim::bgr_to_yuyv(renderer.bgr(), 640, 480, yuyv);
+    hal::bgr_to_yuyv(renderer.bgr(), 640, 480, yuyv);
     benchmark::DoNotOptimize(yuyv.data());
   }
 }

@@ -21,7 +21,7 @@
 #include "dataset_json.hpp"
 #include "ringlet/sim/camera_renderer.hpp"
 #include "ringlet/sim/collision.hpp"
-#include "ringlet/sim/pixel_format.hpp"
+#include "ringlet/hal/yuv.hpp"
 
 namespace {
 
@@ -158,7 +158,7 @@ int run(const Options& o) {
       }
     } else {
       record.image = frame_name(i, "yuyv");
-      bgr_to_yuyv(bgr, k.width, k.height, yuyv);
+      hal::bgr_to_yuyv(bgr, k.width, k.height, yuyv);
       std::ofstream file(out / record.image, std::ios::binary);
       file.write(reinterpret_cast<const char*>(yuyv.data()), static_cast<std::streamsize>(yuyv.size()));
       if (!file) {

@@ -1,7 +1,9 @@
 #pragma once
 // One colour conversion for everything that turns BGR into the NAO's YUYV (ITU-R BT.601, full
 // range, as V4L2 cameras deliver it): camera backends and tools agree on it byte for byte.
+#include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace ringlet::hal {
 
@@ -32,6 +34,14 @@ inline void bgr_row_to_yuyv(const std::uint8_t* bgr, std::uint8_t* yuyv, int wid
     yuyv[3] = static_cast<std::uint8_t>((a.v + b.v + 1) / 2);
     bgr += 6;
     yuyv += 4;
+  }
+}
+
+/// A whole BGR image (width·height·3 bytes, rows packed) to YUYV (width·height·2 bytes).
+inline void bgr_to_yuyv(std::span<const std::uint8_t> bgr, int width, int height, std::span<std::uint8_t> yuyv) noexcept {
+  const auto w = static_cast<std::size_t>(width);
+  for (std::size_t row = 0; row < static_cast<std::size_t>(height); ++row) {
+    bgr_row_to_yuyv(bgr.data() + row * w * 3, yuyv.data() + row * w * 2, width);
   }
 }
 
