@@ -1,5 +1,5 @@
 // ringlet: the one firmware binary, for the simulated and (later) the real robot.
-//   ringlet --config firmware/config/courtyard.toml --report out/report.json --svg out/courtyard.svg
+//   ringlet --config firmware/config/spl_field.toml --report out/report.json --svg out/spl_field.svg
 // Exit codes: 0 mission complete, 2 bad input (flags, config, world), 3 mission incomplete,
 // 4 safe state forced (failsafe/watchdog), 130 interrupted (SIGINT/SIGTERM), 1 internal error.
 #include <csignal>
@@ -63,7 +63,7 @@ void write_json(const std::filesystem::path& path, const nlohmann::json& j) {
 int main(int argc, char** argv) {
   using namespace ringlet;
   CLI::App app{"Ringlet firmware: the cyclic executive driving the simulated (or real) robot"};
-  std::filesystem::path config_path = "firmware/config/courtyard.toml";
+  std::filesystem::path config_path = "firmware/config/spl_field.toml";
   std::optional<double> duration;
   bool realtime = false;
   bool lockstep = false;

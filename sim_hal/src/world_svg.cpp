@@ -199,7 +199,7 @@ class SvgPicture {
 
   void ground() {
     // A field with painted lines reads as grass; a plain world stays white.
-    const std::string_view fill = world_.markings.empty() ? "fill=\"#ffffff\"" : "fill=\"#6aa84f\"";
+    const std::string_view fill = world_.markings.empty() && world_.rings.empty() ? "fill=\"#ffffff\"" : "fill=\"#6aa84f\"";
     rect("ground", px(world_.min.x), py(world_.max.y), world_px_width(), world_px_height(), fill);
     rect("walls", px(world_.min.x), py(world_.max.y), world_px_width(), world_px_height(),
          "fill=\"none\" stroke=\"#8a8a8a\" stroke-width=\"6\"");
@@ -211,6 +211,12 @@ class SvgPicture {
       detail::append_fixed(style, std::max(1.0, m.width * scale_), 3);
       style += '"';
       line("marking", px(m.a.x), py(m.a.y), px(m.b.x), py(m.b.y), style);
+    }
+    for (const Ring& r : world_.rings) {
+      std::string style = "fill=\"none\" stroke=\"#ffffff\" stroke-width=\"";
+      detail::append_fixed(style, std::max(1.0, r.width * scale_), 3);
+      style += '"';
+      circle("marking", px(r.centre.x), py(r.centre.y), r.radius * scale_, style);
     }
   }
 

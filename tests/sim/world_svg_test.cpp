@@ -117,6 +117,15 @@ TEST(SimSvg, DrawsEveryKindOfThing) {
   EXPECT_NE(svg.find("fill=\"#6aa84f\""), std::string::npos);  // grass under the markings
 }
 
+TEST(SimSvg, DrawsPaintedRingsAsCirclesOnGrass) {
+  World world = test::box_world(10.0, 10.0, {1.0, 1.0, 0.0});
+  world.rings.push_back(Ring{{5.0, 5.0}, 0.75, 0.05});
+  const std::string svg = render(world, RunOverlay{});
+  EXPECT_EQ(count(svg, "class=\"marking\""), 1U);
+  EXPECT_NE(svg.find("fill=\"none\" stroke=\"#ffffff\""), std::string::npos);
+  EXPECT_NE(svg.find("fill=\"#6aa84f\""), std::string::npos);
+}
+
 TEST(SimSvg, IsDeterministicAndTheFileMatchesTheStream) {
   const World world = picture_world();
   const std::vector<hal::Pose2> poses = spiral(200);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "ringlet/vision/messages.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "ringlet/whiteboard/messages.hpp"
 #include "synthetic_field.hpp"
@@ -157,28 +158,27 @@ TEST(Pipeline, WrongFrameSizeIsRefused) {
   EXPECT_EQ(p.process(f, {}).status, VisionStatus::kBadFrame);
 }
 
-// The FieldLines message holds what the pipeline reports (the firmware fills it like this).
-TEST(Pipeline, FieldLinesMessageHoldsTheResult) {
+// The messages the firmware posts hold what the pipeline reports, and survive the text round trip.
+TEST(Pipeline, MessagesHoldTheResult) {
   static_assert(std::tuple_size_v<decltype(wb::FieldLines{}.length)> == kMaxLines);
   Camera cam;
   const auto frame = testing::render(testing::field_scene(), cam, hal::PixelFormat::kYuyv, 42);
   VisionPipeline p = make();
   const VisionResult& r = p.process(frame.view, cam.head);
-  wb::FieldLines m;
-  m.sequence = r.sequence;
-  m.capture_time_ns = r.capture_time.count();
-  m.count = static_cast<std::uint8_t>(r.line_count);
-  for (std::size_t i = 0; i < r.line_count; ++i) {
-    m.image_u0[i] = r.lines[i].image_start.u;
-    m.ground_x0[i] = r.lines[i].ground_start.x;
-    m.length[i] = r.lines[i].length_m;
-    m.inliers[i] = static_cast<std::uint16_t>(r.lines[i].inliers);
-  }
-  m.circle_seen = r.circle.seen;
-  m.circle_radius = r.circle.radius_m;
+  ASSERT_GT(r.line_count, 0U);
+  const wb::FieldLines m = to_field_lines(r);
+  EXPECT_EQ(m.count, r.line_count);
+  EXPECT_EQ(m.image_u0[0], r.lines[0].image_start.u);
+  EXPECT_EQ(m.image_v1[0], r.lines[0].image_end.v);
+  EXPECT_EQ(m.ground_y1[0], r.lines[0].ground_end.y);
+  EXPECT_EQ(m.inliers[0], r.lines[0].inliers);
+  EXPECT_EQ(m.circle_seen, r.circle.seen);
   const auto back = wb::FieldLines::from_string(m.description());
   ASSERT_TRUE(back.has_value()) << back.error();
   EXPECT_EQ(back.value(), m);
+  const wb::BallBelief ball = to_ball_belief(r);
+  EXPECT_FALSE(ball.simulated);
+  EXPECT_EQ(ball.visible, r.ball.seen && r.ball.ground_valid);
 }
 
 }  // namespace

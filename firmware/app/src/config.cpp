@@ -263,6 +263,40 @@ FirmwareConfig parse_config(std::string_view text, const std::string& source, co
   }
   safety.reject_unknown();
 
+  Section camera = section(root, top, "camera", source);
+  auto& c = cfg.camera;
+  c.enabled = camera.boolean("enabled", false);
+  c.backend = camera.text("backend", "sim", {"sim", "opencv"});
+  c.source = camera.text("source", "");
+  const int width = camera.integer("width", 640, 16, 4096);
+  const int height = camera.integer("height", 480, 16, 4096);
+  if (width % 2 != 0) camera.fail(*camera.find("width"), "width", "must be even (YUYV packs pixel pairs)");
+  c.intrinsics = hal::CameraIntrinsics::from_fov(width, height, camera.number("hfov_deg", 57.0, 1.0, 179.0),
+                                                 camera.number("vfov_deg", 44.0, 1.0, 179.0));
+  c.format = camera.text("format", "yuyv", {"yuyv", "bgr"}) == "bgr" ? hal::PixelFormat::kBgr8 : hal::PixelFormat::kYuyv;
+  c.mount.pivot_height = camera.number("pivot_height_m", 0.45, 0.01, 10.0);
+  c.mount.forward = camera.number("forward_m", 0.05, -1.0, 1.0);
+  c.mount.up = camera.number("up_m", 0.06, -1.0, 1.0);
+  c.every_frames = camera.integer("every_frames", 3, 1, 1000);
+  if (c.enabled && c.backend == "sim" && cfg.backend != "sim") {
+    camera.fail_missing("backend", "the \"sim\" camera needs robot.backend = \"sim\"");
+  }
+  if (c.enabled && c.backend == "opencv" && c.source.empty()) {
+    camera.fail_missing("source", "the \"opencv\" camera needs a source (a device, a video file or an image folder)");
+  }
+  camera.reject_unknown();
+  if (c.enabled && c.backend == "sim") {
+    cfg.sim.camera = {true, c.intrinsics, c.mount, c.format, c.every_frames};
+  }
+
+  Section vision = section(root, top, "vision", source);
+  const std::string lut = vision.text("lut", "");
+  if (!lut.empty()) cfg.vision.lut = std::filesystem::path(lut).is_absolute() ? std::filesystem::path(lut) : base_dir / lut;
+  cfg.vision.seed = vision.unsigned_integer("seed", 1);
+  cfg.vision.max_trials = vision.integer("max_trials", 30, 1, 10000);
+  cfg.vision.skip = vision.integer("skip", 10, 1, 1000);
+  vision.reject_unknown();
+
   Section telemetry = section(root, top, "telemetry", source);
   cfg.trajectory_every = telemetry.integer("trajectory_every", 10, 1, 100000);
   telemetry.reject_unknown();

@@ -50,6 +50,7 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
   }
   s.fsm_status_seen = stack.fsm_status_seen();
   s.head = stack.telemetry().head_tracking();
+  if (const VisionTask* v = stack.vision()) s.vision = v->stats();
   return s;
 }
 
@@ -73,9 +74,21 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
   std::snprintf(line, sizeof line, "  FsmStatus messages delivered by whiteboard subscription: %llu\n",
                 static_cast<unsigned long long>(s.fsm_status_seen));
   out << line;
+  if (s.vision) {
+    const VisionStats& v = *s.vision;
+    const auto share = [&v](std::uint64_t n) { return v.frames == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(v.frames); };
+    std::snprintf(line, sizeof line,
+                  "  vision: %llu frames, lines in %.1f %% (%.1f per frame), ball in %.1f %%, cut by the deadline %llu, "
+                  "degraded %llu, frames missed %llu\n",
+                  static_cast<unsigned long long>(v.frames), share(v.with_lines),
+                  v.frames == 0 ? 0.0 : static_cast<double>(v.lines) / static_cast<double>(v.frames), share(v.with_ball),
+                  static_cast<unsigned long long>(v.cut), static_cast<unsigned long long>(v.degraded),
+                  static_cast<unsigned long long>(v.missed_frames));
+    out << line;
+  }
   if (s.head.frames > 0) {
     std::snprintf(line, sizeof line,
-                  "  head on the ball (simulated ground truth, yaw within 5 deg): %.1f %% of %llu frames, mean error "
+                  "  head on the ball (true ball, yaw within 5 deg): %.1f %% of %llu frames, mean error "
                   "%.2f deg, max %.1f deg\n",
                   100.0 * s.head.on_target_share(), static_cast<unsigned long long>(s.head.frames),
                   hal::rad_to_deg(s.head.mean_error()), hal::rad_to_deg(s.head.max_error));
@@ -89,6 +102,12 @@ nlohmann::json summary_json(const MissionSummary& s) {
   nlohmann::json machines = nlohmann::json::array();
   for (const auto& m : s.machines) {
     machines.push_back({{"name", m.name}, {"state", m.state}, {"ringlets", m.ringlets}, {"suspended", m.suspended}});
+  }
+  nlohmann::json vision = nullptr;
+  if (s.vision) {
+    vision = {{"frames", s.vision->frames},       {"with_lines", s.vision->with_lines}, {"lines", s.vision->lines},
+              {"with_ball", s.vision->with_ball}, {"cut", s.vision->cut},               {"degraded", s.vision->degraded},
+              {"bad_frames", s.vision->bad_frames}, {"missed_frames", s.vision->missed_frames}};
   }
   return {{"backend", s.backend},
           {"world", s.world},
@@ -107,6 +126,7 @@ nlohmann::json summary_json(const MissionSummary& s) {
           {"trajectory_hash", hash},
           {"machines", machines},
           {"fsm_status_seen", s.fsm_status_seen},
+          {"vision", vision},
           {"head_tracking",
            {{"frames", s.head.frames},
             {"on_target_share", s.head.on_target_share()},

@@ -7,8 +7,8 @@
 namespace ringlet::firmware {
 namespace {
 
-std::vector<executive::TaskBinding> bind(const std::vector<executive::TaskSpec>& table,
-                                         std::initializer_list<std::pair<const char*, executive::Task*>> provided,
+std::vector<executive::TaskBinding> bind_tasks(const std::vector<executive::TaskSpec>& table,
+                                         const std::vector<std::pair<const char*, executive::Task*>>& provided,
                                          const std::string& source) {
   std::vector<executive::TaskBinding> bound;
   std::vector<std::string> problems;
@@ -60,7 +60,9 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config)
       safety_(board_, config_.safety.stop_range, config_.safety.release_range, config_.safety.hold_ms),
       fsm_bus_(board_),
       schedule_(stopwatch_, &fsm_bus_),
-      sense_(robot_->sensors(), state_, board_, sim_),
+      camera_(robot_->camera()),
+      owned_camera_(make_camera(config_, clock())),
+      sense_(robot_->sensors(), state_, board_, sim_, !config_.camera.enabled),
       fsm_(schedule_),
       actuate_(robot_->actuators(), board_),
       telemetry_task_(telemetry_, mission_, mission_machine_, state_, config_.trajectory_every),
@@ -79,13 +81,19 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config)
   });
   schedule_.start();
 
-  auto tasks = bind(config_.tasks,
-                    {{"sense", &sense_},
-                     {"fsm", &fsm_},
-                     {"actuate", &actuate_},
-                     {"telemetry", &telemetry_task_},
-                     {"whiteboard", &whiteboard_task_}},
-                    config_.source.string());
+  std::vector<std::pair<const char*, executive::Task*>> provided{{"sense", &sense_},
+                                                                  {"fsm", &fsm_},
+                                                                  {"actuate", &actuate_},
+                                                                  {"telemetry", &telemetry_task_},
+                                                                  {"whiteboard", &whiteboard_task_}};
+  if (config_.camera.enabled) {
+    if (owned_camera_) camera_ = owned_camera_.get();
+    if (camera_ == nullptr) throw ConfigError(config_.source.string() + ": camera: the backend has no camera");
+    pipeline_ = make_vision(config_);
+    vision_task_.emplace(*camera_, *pipeline_, state_, board_, config_.executive.overrun_on_cpu_time);
+    provided.emplace_back("vision", &*vision_task_);
+  }
+  auto tasks = bind_tasks(config_.tasks, provided, config_.source.string());
   executive_ = std::make_unique<executive::Executive>(config_.executive, std::move(tasks), clock(), stopwatch_,
                                                       robot_->actuators(), &events_);
   whiteboard_task_.attach(*executive_);

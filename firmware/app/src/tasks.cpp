@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "ringlet/executive/executive.hpp"
+#include "ringlet/vision/messages.hpp"
 
 namespace ringlet::firmware {
 namespace {
@@ -34,8 +35,9 @@ void SenseTask::run(const executive::TaskContext& /*ctx*/) noexcept {
   board_.post(wb::Pose{frame.pose.pose.x, frame.pose.pose.y, frame.pose.pose.theta,
                        state_.sensors_ok && frame.pose.valid});
   board_.post(summarize(frame.laser));
-  if (truth_ != nullptr) {
-    state_.true_ball = truth_->true_ball_in_robot_frame();
+  state_.head_history.record(frame.stamp, frame.head);
+  if (truth_ != nullptr) state_.true_ball = truth_->true_ball_in_robot_frame();
+  if (post_true_ball_) {
     wb::BallBelief ball{};
     ball.visible = state_.true_ball.has_value();
     if (state_.true_ball) {
@@ -46,6 +48,30 @@ void SenseTask::run(const executive::TaskContext& /*ctx*/) noexcept {
     ball.simulated = true;  // ground truth, not a detection
     board_.post(ball);
   }
+}
+
+void VisionTask::run(const executive::TaskContext& ctx) noexcept {
+  hal::FrameView frame;
+  if (!camera_.grab_latest(frame) || (have_frame_ && frame.sequence == last_sequence_)) return;
+  if (have_frame_ && frame.sequence > last_sequence_ + 1) stats_.missed_frames += frame.sequence - last_sequence_ - 1;
+  have_frame_ = true;
+  last_sequence_ = frame.sequence;
+  const vision::Deadline deadline =
+      vision::Deadline::after(*ctx.stopwatch, ctx.time_left(), budget_on_cpu_);
+  const vision::VisionResult& r =
+      pipeline_.process(frame, state_.head_history.at(frame.capture_time), deadline, ctx.degrade_level);
+  ++stats_.frames;
+  if (r.status != vision::VisionStatus::kOk) {
+    ++stats_.bad_frames;
+    return;
+  }
+  stats_.lines += r.line_count;
+  if (r.line_count > 0) ++stats_.with_lines;
+  if (r.ball.seen) ++stats_.with_ball;
+  if (r.cut.deadline_hit) ++stats_.cut;
+  if (r.degrade_level > 0) ++stats_.degraded;
+  board_.post(vision::to_field_lines(r));
+  board_.post(vision::to_ball_belief(r));
 }
 
 void FsmTask::run(const executive::TaskContext& ctx) noexcept { schedule_.run_turn(ctx.now); }

@@ -11,6 +11,7 @@
 #include "ringlet/behaviour/move_to_waypoint.hpp"
 #include "ringlet/executive/realtime.hpp"
 #include "ringlet/executive/task_table.hpp"
+#include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/sim/sim_robot.hpp"
 
 namespace ringlet::firmware {
@@ -31,6 +32,26 @@ struct SafetyParams {
   long hold_ms = 300;          // ms clear before driving on
 };
 
+/// The head camera ([camera]): rendered by the simulator ("sim") or read through OpenCV
+/// ("opencv": a V4L2 device, a video file or an image folder).
+struct CameraSettings {
+  bool enabled = false;
+  std::string backend = "sim";
+  std::string source;  // opencv: "/dev/video0", a video file or a folder of images
+  hal::CameraIntrinsics intrinsics = hal::CameraIntrinsics::nao();
+  hal::CameraMount mount{};
+  hal::PixelFormat format = hal::PixelFormat::kYuyv;
+  int every_frames = 3;  // sim: a frame every 3rd period (30 fps at 100 Hz)
+};
+
+/// Field-line and ball detection ([vision]).
+struct VisionSettings {
+  std::filesystem::path lut;  // colour table (ringlet-vision-calibrate); empty: default thresholds
+  std::uint64_t seed = 1;     // RANSAC's sampling
+  int max_trials = 30;        // Mi-Pal's MAX_TRIALS
+  int skip = 10;              // Mi-Pal's RANSAC_SKIP
+};
+
 struct FirmwareConfig {
   std::filesystem::path source;     // the file it came from
   std::string backend = "sim";      // robot.backend
@@ -44,6 +65,8 @@ struct FirmwareConfig {
   executive::RealtimeSettings realtime{};
   std::vector<executive::TaskSpec> tasks;
   SafetyParams safety{};
+  CameraSettings camera{};
+  VisionSettings vision{};
   int trajectory_every = 10;        // telemetry.trajectory_every: frames between samples
 };
 

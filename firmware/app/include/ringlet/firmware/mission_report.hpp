@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -40,6 +41,7 @@ struct MissionSummary {
   std::vector<MachineSummary> machines;
   std::uint64_t fsm_status_seen = 0;  // FsmStatus delivered by the stack's whiteboard subscription
   HeadTracking head{};                // sim only: measured head yaw against the true ball
+  std::optional<VisionStats> vision;  // with a camera: what vision found
 };
 
 [[nodiscard]] MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, bool safe_before_shutdown);

@@ -51,6 +51,9 @@ class FirmwareStack {
   using FsmStatusLog = executive::SpscQueue<wb::FsmStatus, 4096>;
   [[nodiscard]] FsmStatusLog& fsm_status_log() noexcept { return *fsm_status_log_; }
   [[nodiscard]] std::uint64_t fsm_status_seen() const noexcept { return fsm_status_seen_; }
+  /// The head camera ([camera] enabled) and what vision made of it, else null.
+  [[nodiscard]] hal::Camera* camera() noexcept { return camera_; }
+  [[nodiscard]] const VisionTask* vision() const noexcept { return vision_task_ ? &*vision_task_ : nullptr; }
   /// The simulated robot when robot.backend is "sim", else null.
   [[nodiscard]] const sim::SimRobot* sim_robot() const noexcept { return sim_; }
 
@@ -76,6 +79,10 @@ class FirmwareStack {
   behaviour::machines::Safety safety_;
   behaviour::llfsm::WhiteboardFsmBus fsm_bus_;
   behaviour::llfsm::Schedule schedule_;
+  hal::Camera* camera_ = nullptr;              // the robot's, or owned_camera_
+  std::unique_ptr<hal::Camera> owned_camera_;  // [camera] backend "opencv"
+  std::unique_ptr<vision::VisionPipeline> pipeline_;
+  std::optional<VisionTask> vision_task_;
   SenseTask sense_;
   FsmTask fsm_;
   ActuateTask actuate_;
@@ -87,6 +94,12 @@ class FirmwareStack {
 /// The backend named by config.backend. "sim" loads config.world; "can" is refused with a
 /// ConfigError until the SocketCAN backend exists.
 [[nodiscard]] std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config);
+
+/// The camera [camera] asks for when it is not the robot's own (backend "opencv"), else null.
+[[nodiscard]] std::unique_ptr<hal::Camera> make_camera(const FirmwareConfig& config, const hal::Clock& clock);
+
+/// The vision pipeline for [camera] and [vision] (its colour table loaded: ConfigError if not).
+[[nodiscard]] std::unique_ptr<vision::VisionPipeline> make_vision(const FirmwareConfig& config);
 
 /// Whiteboard types the firmware's tasks (not machines) provide: sense posts them.
 inline constexpr std::string_view kTaskProvidedTypes[] = {"Pose", "LaserSummary", "BallBelief"};

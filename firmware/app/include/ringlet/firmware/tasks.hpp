@@ -11,6 +11,7 @@
 #include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/hal/robot.hpp"
 #include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/vision/pipeline.hpp"
 #include "ringlet/whiteboard/whiteboard.hpp"
 
 namespace ringlet::executive {
@@ -20,12 +21,13 @@ class Executive;
 namespace ringlet::firmware {
 
 /// HAL sensors → CycleState and the whiteboard (Pose, LaserSummary). On the simulated robot this
-/// is also what advances the world, and — until vision detects the ball — it posts the
-/// simulator's true ball as the BallBelief, marked `simulated`.
+/// is also what advances the world and keeps the true ball for scoring; without a camera it posts
+/// that true ball as the BallBelief, marked `simulated` (with a camera, vision posts it).
 class SenseTask final : public executive::Task {
  public:
-  SenseTask(hal::Sensors& sensors, CycleState& state, wb::Whiteboard& board, const sim::SimRobot* truth) noexcept
-      : sensors_(sensors), state_(state), board_(board), truth_(truth) {}
+  SenseTask(hal::Sensors& sensors, CycleState& state, wb::Whiteboard& board, const sim::SimRobot* truth,
+            bool post_true_ball) noexcept
+      : sensors_(sensors), state_(state), board_(board), truth_(truth), post_true_ball_(post_true_ball) {}
   void run(const executive::TaskContext& ctx) noexcept override;
 
  private:
@@ -33,6 +35,41 @@ class SenseTask final : public executive::Task {
   CycleState& state_;
   wb::Whiteboard& board_;
   const sim::SimRobot* truth_;
+  bool post_true_ball_;
+};
+
+/// What vision did over the run (for the summary).
+struct VisionStats {
+  std::uint64_t frames = 0;             // camera frames processed
+  std::uint64_t with_lines = 0;         // ... in which at least one line was found
+  std::uint64_t lines = 0;              // lines found in all
+  std::uint64_t with_ball = 0;          // ... in which the ball was found
+  std::uint64_t cut = 0;                // ... in which the deadline cut work short
+  std::uint64_t degraded = 0;           // ... processed at a degrade level above 0
+  std::uint64_t bad_frames = 0;         // frames of the wrong size (nothing done)
+  std::uint64_t missed_frames = 0;      // sequence gaps: frames the camera had that were never processed
+};
+
+/// Camera → vision pipeline → whiteboard (FieldLines, BallBelief). Runs when the table says
+/// (every camera period); processes the newest frame once, with the head posture of its capture
+/// time, inside the task's deadline (and at the executive's degrade level).
+class VisionTask final : public executive::Task {
+ public:
+  VisionTask(hal::Camera& camera, vision::VisionPipeline& pipeline, const CycleState& state, wb::Whiteboard& board,
+             bool budget_on_cpu) noexcept
+      : camera_(camera), pipeline_(pipeline), state_(state), board_(board), budget_on_cpu_(budget_on_cpu) {}
+  void run(const executive::TaskContext& ctx) noexcept override;
+  [[nodiscard]] const VisionStats& stats() const noexcept { return stats_; }
+
+ private:
+  hal::Camera& camera_;
+  vision::VisionPipeline& pipeline_;
+  const CycleState& state_;
+  wb::Whiteboard& board_;
+  bool budget_on_cpu_;
+  bool have_frame_ = false;
+  std::uint64_t last_sequence_ = 0;
+  VisionStats stats_{};
 };
 
 /// The LLFSM schedule: one turn of every machine per activation, on the executive's clock.

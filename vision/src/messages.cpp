@@ -1,0 +1,45 @@
+#include "ringlet/vision/messages.hpp"
+
+#include <algorithm>
+
+namespace ringlet::vision {
+
+wb::FieldLines to_field_lines(const VisionResult& r) noexcept {
+  wb::FieldLines m{};
+  m.sequence = r.sequence;
+  m.capture_time_ns = r.capture_time.count();
+  const std::size_t n = std::min(r.line_count, m.length.size());
+  m.count = static_cast<std::uint8_t>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const FieldLine& l = r.lines[i];
+    m.image_u0[i] = l.image_start.u;
+    m.image_v0[i] = l.image_start.v;
+    m.image_u1[i] = l.image_end.u;
+    m.image_v1[i] = l.image_end.v;
+    m.ground_x0[i] = l.ground_start.x;
+    m.ground_y0[i] = l.ground_start.y;
+    m.ground_x1[i] = l.ground_end.x;
+    m.ground_y1[i] = l.ground_end.y;
+    m.length[i] = l.length_m;
+    m.inliers[i] = static_cast<std::uint16_t>(l.inliers);
+  }
+  m.circle_seen = r.circle.seen;
+  m.circle_x = r.circle.centre.x;
+  m.circle_y = r.circle.centre.y;
+  m.circle_radius = r.circle.radius_m;
+  return m;
+}
+
+wb::BallBelief to_ball_belief(const VisionResult& r) noexcept {
+  wb::BallBelief b{};
+  b.visible = r.ball.seen && r.ball.ground_valid;
+  if (b.visible) {
+    b.x = r.ball.ground.x;
+    b.y = r.ball.ground.y;
+    b.confidence = r.ball.confidence;
+  }
+  b.simulated = false;
+  return b;
+}
+
+}  // namespace ringlet::vision
