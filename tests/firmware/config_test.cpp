@@ -2,6 +2,8 @@
 // configuration comes back; the shipped one and an 83 Hz variant load.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "firmware_test_support.hpp"
 
 namespace ringlet::firmware {
@@ -27,6 +29,20 @@ TEST(FirmwareConfig, ShippedConfigLoads) {
   ASSERT_EQ(cfg.tasks.size(), 5U);
   EXPECT_EQ(cfg.tasks[0].name, "sense");
   EXPECT_TRUE(std::filesystem::exists(cfg.world)) << cfg.world;
+}
+
+TEST(FirmwareConfig, SplConfigHasTheCameraAndAVisionTask) {
+  const auto cfg = load_config(test::kSplConfig);
+  EXPECT_TRUE(cfg.camera.enabled);
+  EXPECT_TRUE(cfg.sim.camera.enabled) << "the sim camera gets the [camera] settings";
+  EXPECT_EQ(cfg.sim.camera.intrinsics.width, 640);
+  EXPECT_EQ(cfg.vision.max_trials, 30);
+  EXPECT_EQ(cfg.vision.skip, 10);
+  const auto vision = std::find_if(cfg.tasks.begin(), cfg.tasks.end(), [](const auto& t) { return t.name == "vision"; });
+  ASSERT_NE(vision, cfg.tasks.end());
+  EXPECT_EQ(vision->every, 3);
+  EXPECT_EQ(vision->budget, hal::Nanos{3'000'000});
+  EXPECT_EQ(vision->policy, executive::OverrunPolicy::kDegrade);
 }
 
 TEST(FirmwareConfig, EightyThreeHertzByConfiguration) {
@@ -83,7 +99,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 200, policy = \"panic\" },",
                 "policy: must be one of \"warn\", \"skip\", \"degrade\", \"failsafe\""},
         BadCase{"min_speed", "min_speed = 5.0", "follower.min_speed: must not exceed max_speed"},
-        BadCase{"release_range_m", "release_range_m = 0.5", "safety.release_range_m: must be larger than stop_range_m"}));
+        BadCase{"release_range_m", "release_range_m = 0.5", "safety.release_range_m: must be larger than stop_range_m"},
+        BadCase{"[telemetry]", "[camera]\nenabled = true\nwidth = 641\n[telemetry]", "camera.width: must be even"},
+        BadCase{"[telemetry]", "[camera]\nenabled = true\nbackend = \"opencv\"\n[telemetry]",
+                "camera.source: the \"opencv\" camera needs a source"},
+        BadCase{"[telemetry]", "[camera]\nformat = \"rgb565\"\n[telemetry]", "camera.format: must be one of \"yuyv\", \"bgr\""},
+        BadCase{"[telemetry]", "[vision]\nskip = 0\n[telemetry]", "vision.skip: must be between 1 and 1000"}));
 
 TEST(FirmwareConfig, SimBackendNeedsAWorld) {
   const std::string message = error_of(with_line(shipped_config_text(), "world", "# no world"));

@@ -11,6 +11,8 @@
 namespace ringlet::firmware::test {
 
 inline const std::filesystem::path kShippedConfig = RINGLET_SHIPPED_CONFIG;
+/// The main job's configuration: the SPL field with the camera and vision (next to the other).
+inline const std::filesystem::path kSplConfig = kShippedConfig.parent_path() / "spl_field.toml";
 
 /// How much slower than the host's native speed this build runs (qemu-aarch64, sanitizers): CPU
 /// time measured here says nothing about the robot then, and budgets are scaled by it or not
@@ -18,8 +20,8 @@ inline const std::filesystem::path kShippedConfig = RINGLET_SHIPPED_CONFIG;
 inline constexpr double kCpuSlowdown = RINGLET_CPU_SLOWDOWN;
 inline constexpr bool kNativeSpeed = kCpuSlowdown == 1.0;
 
-inline std::string shipped_config_text() {
-  std::ifstream in(kShippedConfig);
+inline std::string shipped_config_text(const std::filesystem::path& file = kShippedConfig) {
+  std::ifstream in(file);
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();

@@ -22,6 +22,7 @@ using test::with_line;
 
 struct Run {
   MissionSummary summary;
+  executive::TaskStats vision_timing{};  // the vision task's row, when there is one
   std::vector<std::string> mission_states;  // Mission's FsmStatus states, as the whiteboard saw them
   std::string safety_state;
   std::uint64_t overruns = 0;
@@ -46,6 +47,9 @@ Run run(const std::string& text) {
   r.frame_overruns = stack.executive().frame_stats().frame_overruns;
   r.safe_state = stack.robot().actuators().in_safe_state();
   r.safety_state = std::string(stack.schedule().machine(2).current_state_name());
+  for (std::size_t i = 0; i < stack.executive().tasks().size(); ++i) {
+    if (stack.executive().tasks()[i].spec.name == "vision") r.vision_timing = stack.executive().task_stats()[i];
+  }
   return r;
 }
 
@@ -104,6 +108,63 @@ TEST(FirmwareStack, SafetyMachineStopsTheRobotBeforeAWall) {
   EXPECT_EQ(r.summary.collisions, 0U) << "the robot must stop before the wall";
   EXPECT_EQ(r.safety_state, "Stopped");
   EXPECT_GT(r.summary.distance_m, 3.0) << "it drove up the corridor first";
+}
+
+// The main job's scenario, shortened: the rendered camera feeds vision every third frame.
+std::string spl(double seconds) {
+  return with_line(test::warn_only(shipped_config_text(test::kSplConfig)), "timeout_s",
+                   "timeout_s = " + std::to_string(seconds));
+}
+
+TEST(FirmwareVision, LinesAndBallAreDetectedAndTheHeadFollowsTheDetectedBall) {
+  const auto r = run(spl(8.0));
+  ASSERT_TRUE(r.summary.vision.has_value());
+  const VisionStats& v = *r.summary.vision;
+  EXPECT_GE(v.frames, 260U) << "one frame every 3rd period for 8 s";
+  EXPECT_EQ(v.bad_frames, 0U);
+  EXPECT_EQ(v.missed_frames, 0U) << "in lockstep every rendered frame is processed";
+  EXPECT_GT(static_cast<double>(v.with_lines), 0.95 * static_cast<double>(v.frames));
+  EXPECT_GT(static_cast<double>(v.with_ball), 0.6 * static_cast<double>(v.frames));
+  EXPECT_EQ(r.summary.collisions, 0U);
+  // The ball belief comes from vision now, and the tracker keeps the head on the true ball.
+  EXPECT_GT(r.summary.head.on_target_share(), 0.7);
+  EXPECT_GE(r.vision_timing.runs, v.frames);
+  EXPECT_LE(r.vision_timing.runs - v.frames, 2U) << "only the activations before the first frame have nothing to do";
+  if (test::kNativeSpeed) {
+    EXPECT_EQ(r.vision_timing.overruns, 0U);
+    EXPECT_LT(r.vision_timing.cpu.percentile(0.99), hal::Nanos{3'000'000}) << "inside the 3 ms vision budget";
+  }
+}
+
+TEST(FirmwareVision, SameSeedSameRunWithTheCamera) {
+  const auto a = run(spl(3.0));
+  const auto b = run(spl(3.0));
+  EXPECT_EQ(a.summary.trajectory_hash, b.summary.trajectory_hash);
+  ASSERT_TRUE(a.summary.vision && b.summary.vision);
+  EXPECT_EQ(a.summary.vision->lines, b.summary.vision->lines);
+  EXPECT_EQ(a.summary.vision->with_ball, b.summary.vision->with_ball);
+  EXPECT_EQ(a.summary.head.sum_error, b.summary.head.sum_error) << "the head followed the same detections";
+}
+
+TEST(FirmwareVision, MissingColourTableIsAConfigError) {
+  const auto cfg = parse_as_shipped(with_line(spl(1.0), "lut =", "lut = \"no-such-table.lut\""));
+  try {
+    FirmwareStack stack(cfg);
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("vision.lut: colour table"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no-such-table.lut"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FirmwareVision, CameraWithoutAVisionTaskInTheTableIsRefused) {
+  const auto cfg = parse_as_shipped(with_line(spl(1.0), "  { name = \"vision\"", ""));
+  try {
+    FirmwareStack stack(cfg);
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("task 'vision' is missing from the table"), std::string::npos) << e.what();
+  }
 }
 
 TEST(FirmwareStack, SameSeedSameTrajectoryOtherSeedOtherTrajectory) {
