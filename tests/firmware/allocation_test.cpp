@@ -69,5 +69,24 @@ TEST(NoAllocation, FullSimulatedStackAllocatesNothingInTheCycle) {
   EXPECT_GT(stack.mission().goals_reached(), 0U) << "the robot must actually drive during the counted frames";
 }
 
+TEST(NoAllocation, CameraAndVisionAllocateNothingEither) {
+  // The main job's stack: the sim camera's render thread and the vision task run as well; the
+  // counter sees every thread's allocations.
+  const auto cfg = test::parse_as_shipped(test::warn_only(test::shipped_config_text(test::kSplConfig)));
+  FirmwareStack stack(cfg);
+  auto& exec = stack.executive();
+  exec.run(30);  // start-up: first frames rendered and processed
+  std::uint64_t allocations = 0;
+  {
+    AllocationCounter counter;
+    exec.run(600);
+    allocations = counter.count();
+  }
+  EXPECT_EQ(allocations, 0U) << "operator new was called while the camera and vision ran";
+  ASSERT_NE(stack.vision(), nullptr);
+  EXPECT_GT(stack.vision()->stats().frames, 190U);
+  EXPECT_GT(stack.vision()->stats().lines, 0U);
+}
+
 }  // namespace
 }  // namespace ringlet::firmware
