@@ -1,6 +1,8 @@
 // ringlet-dataset: N rendered head-camera frames of a world, each a picture and a JSON file with
 // its ground truth, from random robot poses and head angles, with varied sun stripes and, for
-// some frames, robots standing close to the camera. Deterministic for a seed.
+// some frames, robots standing close to the camera. Deterministic for a seed. Unless --no-labels,
+// also frame_NNNN_labels.png: per pixel the vision ColourClass of what the renderer drew there,
+// the labelled examples ringlet-vision-calibrate builds and evaluates colour tables from.
 //
 // Exit codes: 0 done · 2 bad input (flags, world file) · 1 cannot write the output.
 #include <CLI/CLI.hpp>
@@ -22,6 +24,7 @@
 #include "ringlet/sim/camera_renderer.hpp"
 #include "ringlet/sim/collision.hpp"
 #include "ringlet/hal/yuv.hpp"
+#include "ringlet/vision/colour.hpp"
 
 namespace {
 
@@ -53,7 +56,32 @@ struct Options {
   double min_pitch_deg = 8.0;
   double max_pitch_deg = 32.0;
   bool quiet = false;
+  bool labels = true;
 };
+
+/// The colour class a pixel of this label should be classified as: carpet is field, painted
+/// markings are line, the ball is ball; everything else (background, floor beyond the carpet,
+/// robots, posts, obstacles) is other, even where it is white, because a line detector must not
+/// take it for a line.
+vision::ColourClass colour_class(PixelLabel label) {
+  switch (label) {
+    case PixelLabel::kCarpet: return vision::ColourClass::kField;
+    case PixelLabel::kMarking: return vision::ColourClass::kLine;
+    case PixelLabel::kBall: return vision::ColourClass::kBall;
+    case PixelLabel::kBackground:
+    case PixelLabel::kFloor:
+    case PixelLabel::kRobot:
+    case PixelLabel::kPost:
+    case PixelLabel::kObstacle: return vision::ColourClass::kOther;
+  }
+  return vision::ColourClass::kOther;
+}
+
+std::string labels_name(int index) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "frame_%04d_labels.png", index);
+  return buffer;
+}
 
 /// A pose inside the bounds (0.3 m from the walls) where a robot of radius 0.25 stands free.
 hal::Pose2 random_pose(const World& world, Uniform& rnd) {
@@ -130,6 +158,7 @@ int run(const Options& o) {
   const hal::CameraIntrinsics& k = spec.intrinsics;
   Uniform rnd(o.seed);
   std::vector<std::uint8_t> yuyv(static_cast<std::size_t>(k.width) * static_cast<std::size_t>(k.height) * 2U);
+  cv::Mat classes(k.height, k.width, CV_8UC1);
 
   for (int i = 0; i < o.count; ++i) {
     const hal::Pose2 pose = random_pose(world, rnd);
@@ -166,6 +195,15 @@ int run(const Options& o) {
         return 1;
       }
     }
+    if (o.labels) {
+      const auto labels = renderer.labels();
+      for (std::size_t p = 0; p < labels.size(); ++p) classes.data[p] = static_cast<std::uint8_t>(colour_class(labels[p]));
+      const std::filesystem::path labels_path = out / labels_name(i);
+      if (!cv::imwrite(labels_path.string(), classes)) {
+        std::cerr << "ringlet-dataset: " << labels_path.string() << ": cannot write PNG\n";
+        return 1;
+      }
+    }
     const std::filesystem::path json_path = out / frame_name(i, "json");
     std::ofstream json(json_path);
     json << dataset::frame_json(record, renderer).dump(2) << "\n";
@@ -175,7 +213,8 @@ int run(const Options& o) {
     }
     progress(o, i + 1);
   }
-  std::cout << "ringlet-dataset: wrote " << o.count << " frames (" << o.format << " + json) to " << o.out << "\n";
+  std::cout << "ringlet-dataset: wrote " << o.count << " frames (" << o.format << " + json" << (o.labels ? " + labels" : "")
+            << ") to " << o.out << "\n";
   return 0;
 }
 
@@ -200,6 +239,8 @@ int main(int argc, char** argv) {
   app.add_option("--min-pitch", o.min_pitch_deg, "lowest head pitch, deg (down positive)")->capture_default_str();
   app.add_option("--max-pitch", o.max_pitch_deg, "highest head pitch, deg")->capture_default_str();
   app.add_flag("-q,--quiet", o.quiet, "no progress output");
+  app.add_flag("!--no-labels", o.labels,
+               "do not write frame_NNNN_labels.png (8-bit, per pixel the colour class: 0 other, 1 field, 2 line, 3 ball)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,91 @@
+#include "dataset_frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "vision_io.hpp"
+
+namespace ringlet::vision::evaluate {
+
+namespace fs = std::filesystem;
+using tools::ToolError;
+
+std::vector<fs::path> list_dataset_frames(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw ToolError(dir.string() + ": not a directory");
+  std::vector<fs::path> out;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("frame_", 0) == 0 && e.path().extension() == ".json") out.push_back(e.path());
+  }
+  if (ec) throw ToolError(dir.string() + ": cannot list: " + ec.message());
+  if (out.empty()) throw ToolError(dir.string() + ": no frame_*.json files (a folder written by ringlet-dataset)");
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+double projected_half_width(const hal::CameraIntrinsics& k, const hal::CameraPose& pose, const hal::RobotPoint& at,
+                            double dx, double dy, double width_m) {
+  const double h = width_m / 2.0;
+  const auto a = hal::project(k, pose, {at.x - dy * h, at.y + dx * h, 0.0});
+  const auto b = hal::project(k, pose, {at.x + dy * h, at.y - dx * h, 0.0});
+  if (!a || !b) return 0.0;
+  return std::hypot(a->u - b->u, a->v - b->v) / 2.0;
+}
+
+DatasetFrame load_dataset_frame(const fs::path& json_path) {
+  std::ifstream file(json_path);
+  if (!file) throw ToolError(json_path.string() + ": cannot read");
+  DatasetFrame f;
+  f.json = json_path;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(file);
+    const std::string format = j.at("format").get<std::string>();
+    if (format != "png") {
+      throw ToolError(json_path.string() + ": frame format is '" + format + "'; the evaluation needs png frames "
+                      "(ringlet-dataset --format png)");
+    }
+    f.picture = json_path.parent_path() / j.at("image").get<std::string>();
+    f.index = j.at("frame").get<std::uint64_t>();
+    const auto& k = j.at("intrinsics");
+    f.intrinsics.width = k.at("width").get<int>();
+    f.intrinsics.height = k.at("height").get<int>();
+    f.intrinsics.fx = k.at("fx").get<double>();
+    f.intrinsics.fy = k.at("fy").get<double>();
+    f.intrinsics.cx = k.at("cx").get<double>();
+    f.intrinsics.cy = k.at("cy").get<double>();
+    const auto& m = j.at("mount");
+    f.mount = {m.at("pivot_height").get<double>(), m.at("forward").get<double>(), m.at("up").get<double>()};
+    f.head = {j.at("head").at("yaw").get<double>(), j.at("head").at("pitch").get<double>()};
+    const hal::CameraPose pose = hal::CameraPose::from_head(f.mount, f.head);
+    for (const auto& line : j.at("lines")) {
+      const auto& img = line.at("image");
+      const auto& ground = line.at("ground");
+      TruthSegment t;
+      t.line = {img.at(0).at(0).get<double>(), img.at(0).at(1).get<double>(), img.at(1).at(0).get<double>(),
+                img.at(1).at(1).get<double>()};
+      const hal::RobotPoint a{ground.at(0).at(0).get<double>(), ground.at(0).at(1).get<double>()};
+      const hal::RobotPoint b{ground.at(1).at(0).get<double>(), ground.at(1).at(1).get<double>()};
+      const double length = std::hypot(b.x - a.x, b.y - a.y);
+      if (length > 0.0) {
+        const double dx = (b.x - a.x) / length;
+        const double dy = (b.y - a.y) / length;
+        const double width = line.at("width").get<double>();
+        t.half_width_px = std::max(projected_half_width(f.intrinsics, pose, a, dx, dy, width),
+                                   projected_half_width(f.intrinsics, pose, b, dx, dy, width));
+      }
+      f.lines.push_back(t);
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw ToolError(json_path.string() + ": not a ringlet-dataset frame record: " + e.what());
+  }
+  if (f.intrinsics.width < 2 || f.intrinsics.height < 2 || !(f.intrinsics.fx > 0.0) || !(f.intrinsics.fy > 0.0)) {
+    throw ToolError(json_path.string() + ": bad intrinsics");
+  }
+  return f;
+}
+
+}  // namespace ringlet::vision::evaluate

@@ -1,0 +1,39 @@
+#pragma once
+// One frame of a ringlet-dataset folder: frame_NNNN.json (camera, head, ground truth) and its
+// picture. The truth for line detectors is the JSON's visible straight-line runs as image segments
+// with their painted width projected into the image.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/hal/sensors.hpp"
+#include "segment_match.hpp"
+
+namespace ringlet::vision::evaluate {
+
+struct DatasetFrame {
+  std::filesystem::path json;
+  std::filesystem::path picture;  // empty when the frame is not a PNG/JPEG (e.g. raw yuyv)
+  std::uint64_t index = 0;
+  hal::CameraIntrinsics intrinsics{};
+  hal::CameraMount mount{};
+  hal::HeadJoints head{};
+  std::vector<TruthSegment> lines;
+};
+
+/// The frame_*.json files of a dataset folder, sorted by name. ToolError when the folder is
+/// missing or holds none.
+[[nodiscard]] std::vector<std::filesystem::path> list_dataset_frames(const std::filesystem::path& dir);
+
+/// Reads one frame's JSON. ToolError naming the file on a read or parse error, a missing field, or
+/// a picture format other than png.
+[[nodiscard]] DatasetFrame load_dataset_frame(const std::filesystem::path& json);
+
+/// Half the image width of a painted line `width_m` wide at ground point `at` on a line with unit
+/// ground direction (dx, dy): the two points ±width/2 across it, projected. 0 when either does not
+/// project.
+[[nodiscard]] double projected_half_width(const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+                                          const hal::RobotPoint& at, double dx, double dy, double width_m);
+
+}  // namespace ringlet::vision::evaluate

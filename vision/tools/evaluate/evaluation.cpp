@@ -1,0 +1,186 @@
+#include "evaluation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <numeric>
+
+#include <opencv2/core.hpp>
+
+#include "dataset_frame.hpp"
+#include "ringlet/hal/yuv.hpp"
+#include "ringlet/vision/horizon.hpp"
+#include "vision_io.hpp"
+
+namespace ringlet::vision::evaluate {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const double rank = std::ceil(p / 100.0 * static_cast<double>(values.size()));
+  const auto i = static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(values.size()))) - 1U;
+  return values[i];
+}
+
+double DetectorReport::median_ms() const { return percentile(time_ms, 50.0); }
+double DetectorReport::p99_ms() const { return percentile(time_ms, 99.0); }
+double DetectorReport::mean_ms() const {
+  if (time_ms.empty()) return 0.0;
+  return std::accumulate(time_ms.begin(), time_ms.end(), 0.0) / static_cast<double>(time_ms.size());
+}
+
+double EvalReport::speed_ratio() const {
+  const double r = ringlet.median_ms();
+  return r > 0.0 ? baseline.median_ms() / r : 0.0;
+}
+
+namespace {
+
+double elapsed_ms(Clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+}
+
+/// A frame ready for both detectors.
+struct LoadedFrame {
+  DatasetFrame meta;
+  cv::Mat bgr;
+  std::vector<std::uint8_t> yuyv;
+};
+
+LoadedFrame load_frame(const fs::path& json) {
+  LoadedFrame f;
+  f.meta = load_dataset_frame(json);
+  const hal::CameraIntrinsics& k = f.meta.intrinsics;
+  if (k.width % 2 != 0) throw tools::ToolError(json.string() + ": odd image width, YUYV needs pixel pairs");
+  f.bgr = tools::load_bgr(f.meta.picture, k.width, k.height);
+  if (!f.bgr.isContinuous()) f.bgr = f.bgr.clone();
+  f.yuyv.resize(static_cast<std::size_t>(k.width) * static_cast<std::size_t>(k.height) * 2U);
+  hal::bgr_to_yuyv({f.bgr.data, f.bgr.total() * 3U}, k.width, k.height, f.yuyv);
+  return f;
+}
+
+hal::FrameView yuyv_view(const LoadedFrame& f) {
+  hal::FrameView v;
+  v.sequence = f.meta.index;
+  v.format = hal::PixelFormat::kYuyv;
+  v.width = f.meta.intrinsics.width;
+  v.height = f.meta.intrinsics.height;
+  v.stride = 2 * v.width;
+  v.data = f.yuyv.data();
+  return v;
+}
+
+bool same_camera(const VisionConfig& c, const DatasetFrame& f) {
+  const auto& a = c.intrinsics;
+  const auto& b = f.intrinsics;
+  return a.width == b.width && a.height == b.height && a.fx == b.fx && a.fy == b.fy && a.cx == b.cx && a.cy == b.cy &&
+         c.mount.pivot_height == f.mount.pivot_height && c.mount.forward == f.mount.forward && c.mount.up == f.mount.up;
+}
+
+/// The horizon mask the pipeline itself uses (same margin), as the first usable row per column.
+std::vector<int> horizon_mask(const DatasetFrame& f, int margin_px) {
+  std::vector<int> rows(static_cast<std::size_t>(f.intrinsics.width));
+  (void)horizon_rows(f.intrinsics, hal::CameraPose::from_head(f.mount, f.head), margin_px, rows);
+  return rows;
+}
+
+struct HoughRun {
+  std::vector<Segment2> segments;
+  double ms = 0.0;
+};
+
+HoughRun run_hough(const LoadedFrame& f, const HoughParams& p, int margin_px) {
+  // Timed from the horizon on, as the pipeline's time includes its own horizon computation.
+  const auto start = Clock::now();
+  const std::vector<int> mask = horizon_mask(f.meta, margin_px);
+  HoughRun r{detect_hough(f.bgr, mask, p), 0.0};
+  r.ms = elapsed_ms(start);
+  return r;
+}
+
+}  // namespace
+
+EvalReport run_evaluation(const EvalOptions& o) {
+  // One thread for OpenCV too: the comparison is per core, as the robot's vision task runs.
+  cv::setNumThreads(1);
+  EvalReport report;
+  report.dataset = o.dataset.string();
+  report.lut = o.lut.empty() ? "default thresholds" : o.lut.string();
+  report.match = o.match;
+  report.ringlet.name = "Ringlet (LUT + scan lines + RANSAC)";
+  report.baseline.name = "OpenCV Canny + HoughLinesP";
+
+  std::vector<fs::path> frames = list_dataset_frames(o.dataset);
+  if (o.max_frames > 0 && frames.size() > static_cast<std::size_t>(o.max_frames)) {
+    frames.resize(static_cast<std::size_t>(o.max_frames));
+  }
+  report.frames_total = frames.size();
+  report.tune_frames = static_cast<std::size_t>(std::max(o.tune_frames, 0));
+  if (report.tune_frames >= frames.size()) {
+    throw tools::ToolError(o.dataset.string() + ": " + std::to_string(frames.size()) + " frames, but --tune " +
+                           std::to_string(report.tune_frames) +
+                           " needs more: the frames after the tuning subset are the ones reported on");
+  }
+  report.report_frames = frames.size() - report.tune_frames;
+  const ColourTable table = tools::load_table(o.lut);
+  const int margin = o.vision.horizon_margin_px;
+
+  // Tuning: every candidate on the tuning subset (kept in memory: it is read once per candidate).
+  if (report.tune_frames > 0) {
+    std::vector<LoadedFrame> tuning;
+    for (std::size_t i = 0; i < report.tune_frames; ++i) {
+      tuning.push_back(load_frame(frames[i]));
+      if (o.progress) o.progress("loading tuning frames", i + 1, report.tune_frames);
+    }
+    const std::vector<HoughParams> candidates = HoughParams::candidates();
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      TuningResult t{candidates[c], {}};
+      for (const LoadedFrame& f : tuning) {
+        const HoughRun r = run_hough(f, t.params, margin);
+        t.counts += match_segments(r.segments, f.meta.lines, o.match);
+      }
+      // Strictly better only: ties keep the earlier (closer to OpenCV's usual) candidate.
+      if (report.tuning.empty() || t.counts.f1() > report.tuning[report.chosen].counts.f1()) report.chosen = c;
+      report.tuning.push_back(t);
+      if (o.progress) o.progress("tuning Hough", c + 1, candidates.size());
+    }
+    report.hough = report.tuning[report.chosen].params;
+  }
+
+  std::unique_ptr<VisionPipeline> pipeline;
+  std::vector<Segment2> segments;
+  for (std::size_t i = report.tune_frames; i < frames.size(); ++i) {
+    const LoadedFrame f = load_frame(frames[i]);
+    if (!pipeline || !same_camera(pipeline->config(), f.meta)) {
+      VisionConfig config = o.vision;
+      config.intrinsics = f.meta.intrinsics;
+      config.mount = f.meta.mount;
+      pipeline = std::make_unique<VisionPipeline>(config, table);
+    }
+    const hal::FrameView view = yuyv_view(f);
+    const auto start = Clock::now();
+    const VisionResult& result = pipeline->process(view, f.meta.head);
+    report.ringlet.time_ms.push_back(elapsed_ms(start));
+    if (result.status != VisionStatus::kOk) throw tools::ToolError(frames[i].string() + ": the pipeline refused the frame");
+    segments.clear();
+    for (std::size_t l = 0; l < result.line_count; ++l) {
+      const FieldLine& line = result.lines[l];
+      segments.push_back({line.image_start.u, line.image_start.v, line.image_end.u, line.image_end.v});
+    }
+    report.ringlet.raw_detections += segments.size();
+    report.ringlet.counts += match_segments(segments, f.meta.lines, o.match);
+
+    const HoughRun h = run_hough(f, report.hough, margin);
+    report.baseline.time_ms.push_back(h.ms);
+    report.baseline.raw_detections += h.segments.size();
+    report.baseline.counts += match_segments(h.segments, f.meta.lines, o.match);
+    if (o.progress) o.progress("evaluating", i + 1 - report.tune_frames, report.report_frames);
+  }
+  return report;
+}
+
+}  // namespace ringlet::vision::evaluate

@@ -1,0 +1,72 @@
+#pragma once
+// The comparison on a ringlet-dataset folder: Ringlet's pipeline (on YUYV made from the PNG with
+// hal::bgr_to_yuyv, what the robot's camera gives) against Canny + HoughLinesP (on the BGR
+// picture, edges above the horizon masked), scored by the same rule (segment_match.hpp) on the
+// same frames, each timed alone with std::chrono::steady_clock on one thread.
+//
+// Fairness: Hough's parameters are chosen (best F1 over HoughParams::candidates()) on the first
+// `tune_frames` frames, and BOTH detectors are reported only on the frames after them, so
+// neither is scored on frames its parameters were chosen on. (Ringlet's parameters were set
+// before this dataset existed.)
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hough_baseline.hpp"
+#include "ringlet/vision/pipeline.hpp"
+#include "segment_match.hpp"
+
+namespace ringlet::vision::evaluate {
+
+struct EvalOptions {
+  std::filesystem::path dataset;
+  std::filesystem::path lut;   // empty: the default thresholds table
+  int tune_frames = 40;        // 0: OpenCV-style defaults (HoughParams{}), no tuning
+  int max_frames = 0;          // 0: all
+  MatchParams match{};
+  VisionConfig vision{};       // intrinsics and mount are replaced by each frame's
+  /// (stage, done, total): "loading", "tuning", "evaluating".
+  std::function<void(const char*, std::size_t, std::size_t)> progress;
+};
+
+struct DetectorReport {
+  std::string name;
+  MatchCounts counts{};
+  std::size_t raw_detections = 0;   // every segment reported, scored or not
+  std::vector<double> time_ms;      // per frame
+  [[nodiscard]] double median_ms() const;
+  [[nodiscard]] double p99_ms() const;
+  [[nodiscard]] double mean_ms() const;
+};
+
+struct TuningResult {
+  HoughParams params{};
+  MatchCounts counts{};
+};
+
+struct EvalReport {
+  std::string dataset;
+  std::string lut;
+  std::size_t frames_total = 0;
+  std::size_t tune_frames = 0;      // frames [0, tune_frames) were used for tuning only
+  std::size_t report_frames = 0;    // frames reported on: the rest
+  HoughParams hough{};
+  std::vector<TuningResult> tuning;  // every candidate, in HoughParams::candidates() order
+  std::size_t chosen = 0;            // index into tuning (when tuned)
+  DetectorReport ringlet;
+  DetectorReport baseline;
+  MatchParams match{};
+  /// Hough's median time / Ringlet's: > 1 means Ringlet is faster.
+  [[nodiscard]] double speed_ratio() const;
+};
+
+/// Runs the whole comparison. ToolError on bad input (folder, frame records, images, LUT, too few
+/// frames for the tuning subset).
+[[nodiscard]] EvalReport run_evaluation(const EvalOptions& options);
+
+/// Percentile (nearest rank, p in [0, 100]) of unsorted values; 0 for none.
+[[nodiscard]] double percentile(std::vector<double> values, double p);
+
+}  // namespace ringlet::vision::evaluate

@@ -1,0 +1,182 @@
+#include "report.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace ringlet::vision::evaluate {
+
+namespace {
+
+std::string fmt(const char* format, double v) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, v);
+  return text;
+}
+
+nlohmann::json detector_json(const DetectorReport& d) {
+  const MatchCounts& c = d.counts;
+  return {{"name", d.name},
+          {"precision", c.precision()},
+          {"recall", c.recall()},
+          {"f1", c.f1()},
+          {"detections_scored", c.detections},
+          {"detections_all", d.raw_detections},
+          {"true_positives", c.true_positives},
+          {"truths", c.truths},
+          {"recalled", c.recalled},
+          {"mean_angle_error_deg", c.mean_angle_error_deg()},
+          {"mean_endpoint_error_px", c.mean_endpoint_error_px()},
+          {"mean_extent_error_px", c.mean_extent_error_px()},
+          {"time_ms", {{"median", d.median_ms()}, {"p99", d.p99_ms()}, {"mean", d.mean_ms()}, {"per_frame", d.time_ms}}}};
+}
+
+}  // namespace
+
+void print_report(const EvalReport& r, std::ostream& os) {
+  os << "dataset " << r.dataset << ": " << r.frames_total << " frames; ";
+  if (r.tune_frames > 0) {
+    os << "Hough tuned on frames 0.." << r.tune_frames - 1 << " (best F1 of " << r.tuning.size()
+       << " parameter sets), both detectors reported on the other " << r.report_frames << " frames\n";
+  } else {
+    os << "Hough untuned (defaults), both detectors reported on all " << r.report_frames << " frames\n";
+  }
+  os << "colour table: " << r.lut << "\n";
+  os << "Hough parameters: " << r.hough.describe() << "\n";
+  os << "matching: angle <= " << r.match.max_angle_deg << " deg, endpoints <= " << r.match.max_distance_px
+     << " px + half line width, recall needs coverage >= " << r.match.min_coverage << ", truths shorter than "
+     << r.match.min_truth_length_px << " px ignored\n\n";
+  char line[256];
+  std::snprintf(line, sizeof line, "%-28s %14s %14s\n", "", "Ringlet", "Canny+HoughP");
+  os << line;
+  const auto row = [&](const char* name, const std::string& a, const std::string& b) {
+    std::snprintf(line, sizeof line, "%-28s %14s %14s\n", name, a.c_str(), b.c_str());
+    os << line;
+  };
+  const MatchCounts& a = r.ringlet.counts;
+  const MatchCounts& b = r.baseline.counts;
+  row("precision", fmt("%.3f", a.precision()), fmt("%.3f", b.precision()));
+  row("recall", fmt("%.3f", a.recall()), fmt("%.3f", b.recall()));
+  row("F1", fmt("%.3f", a.f1()), fmt("%.3f", b.f1()));
+  row("detections (scored)", std::to_string(a.detections), std::to_string(b.detections));
+  row("true segments (recalled)", std::to_string(a.truths) + " (" + std::to_string(a.recalled) + ")",
+      std::to_string(b.truths) + " (" + std::to_string(b.recalled) + ")");
+  row("mean angle error (deg)", fmt("%.2f", a.mean_angle_error_deg()), fmt("%.2f", b.mean_angle_error_deg()));
+  row("mean endpoint error (px)", fmt("%.2f", a.mean_endpoint_error_px()), fmt("%.2f", b.mean_endpoint_error_px()));
+  row("mean extent error (px)", fmt("%.1f", a.mean_extent_error_px()), fmt("%.1f", b.mean_extent_error_px()));
+  row("time/frame median (ms)", fmt("%.3f", r.ringlet.median_ms()), fmt("%.3f", r.baseline.median_ms()));
+  row("time/frame p99 (ms)", fmt("%.3f", r.ringlet.p99_ms()), fmt("%.3f", r.baseline.p99_ms()));
+  os << "speed ratio (Hough median / Ringlet median): " << fmt("%.2f", r.speed_ratio()) << "x\n";
+}
+
+nlohmann::json report_json(const EvalReport& r) {
+  nlohmann::json tuning = nlohmann::json::array();
+  for (const TuningResult& t : r.tuning) {
+    tuning.push_back({{"params", t.params.describe()}, {"f1", t.counts.f1()}, {"precision", t.counts.precision()},
+                      {"recall", t.counts.recall()}});
+  }
+  return {{"dataset", r.dataset},
+          {"colour_table", r.lut},
+          {"frames_total", r.frames_total},
+          {"tune_frames", r.tune_frames},
+          {"report_frames", r.report_frames},
+          {"protocol", "Hough parameters chosen by best F1 on frames [0, tune_frames); both detectors scored on the "
+                       "remaining frames only; each detector timed alone with steady_clock, one thread"},
+          {"match", {{"max_angle_deg", r.match.max_angle_deg}, {"max_distance_px", r.match.max_distance_px},
+                     {"min_coverage", r.match.min_coverage}, {"min_truth_length_px", r.match.min_truth_length_px}}},
+          {"hough_params", r.hough.describe()},
+          {"hough_tuning", tuning},
+          {"detectors", {{"ringlet", detector_json(r.ringlet)}, {"hough", detector_json(r.baseline)}}},
+          {"speed_ratio", r.speed_ratio()}};
+}
+
+std::string report_svg(const EvalReport& r) {
+  // Left panel: P, R, F1 bars per detector. Right panel: per-frame time, a strip of dots per
+  // detector on a log axis with median and p99 ticks (times differ by orders of magnitude).
+  constexpr int kW = 860, kH = 400;
+  const std::array<const char*, 2> colour{"#2e7d32", "#1565c0"};
+  const std::array<const DetectorReport*, 2> det{&r.ringlet, &r.baseline};
+  const std::array<const char*, 2> label{"Ringlet", "Canny+HoughLinesP"};
+  std::ostringstream s;
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kW << "\" height=\"" << kH
+    << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s << "<text x=\"10\" y=\"20\" font-size=\"14\" font-weight=\"bold\">Field lines: Ringlet vs Canny + HoughLinesP, "
+    << r.report_frames << " frames (Hough tuned on " << r.tune_frames << " other frames)</text>\n";
+  // Panel 1.
+  const int x0 = 50, y0 = 60, ph = 260, pw = 330;
+  s << "<line x1=\"" << x0 << "\" y1=\"" << y0 + ph << "\" x2=\"" << x0 + pw << "\" y2=\"" << y0 + ph
+    << "\" stroke=\"black\"/>\n<line x1=\"" << x0 << "\" y1=\"" << y0 << "\" x2=\"" << x0 << "\" y2=\"" << y0 + ph
+    << "\" stroke=\"black\"/>\n";
+  for (int t = 0; t <= 4; ++t) {
+    const int y = y0 + ph - t * ph / 4;
+    s << "<text x=\"" << x0 - 8 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">" << fmt("%.2f", t / 4.0)
+      << "</text><line x1=\"" << x0 << "\" y1=\"" << y << "\" x2=\"" << x0 + pw << "\" y2=\"" << y
+      << "\" stroke=\"#ddd\"/>\n";
+  }
+  const std::array<const char*, 3> metric{"precision", "recall", "F1"};
+  for (std::size_t m = 0; m < 3; ++m) {
+    const int gx = x0 + 20 + static_cast<int>(m) * 105;
+    for (std::size_t d = 0; d < 2; ++d) {
+      const MatchCounts& c = det[d]->counts;
+      const double v = m == 0 ? c.precision() : (m == 1 ? c.recall() : c.f1());
+      const int h = static_cast<int>(std::lround(v * ph));
+      const int x = gx + static_cast<int>(d) * 40;
+      s << "<rect x=\"" << x << "\" y=\"" << y0 + ph - h << "\" width=\"36\" height=\"" << h << "\" fill=\""
+        << colour[d] << "\"/><text x=\"" << x + 18 << "\" y=\"" << y0 + ph - h - 4 << "\" text-anchor=\"middle\">"
+        << fmt("%.2f", v) << "</text>\n";
+    }
+    s << "<text x=\"" << gx + 38 << "\" y=\"" << y0 + ph + 18 << "\" text-anchor=\"middle\">" << metric[m] << "</text>\n";
+  }
+  // Panel 2: log10 time axis.
+  const int x1 = 480, pw2 = 340;
+  double lo = 1e9, hi = 0.0;
+  for (const auto* d : det) {
+    for (const double t : d->time_ms) {
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    }
+  }
+  if (!(hi > 0.0)) {
+    lo = 0.1;
+    hi = 10.0;
+  }
+  const double l0 = std::floor(std::log10(std::max(lo, 1e-3)));
+  const double l1 = std::max(std::ceil(std::log10(hi)), l0 + 1.0);
+  const auto xt = [&](double ms) {
+    return x1 + static_cast<int>(std::lround((std::log10(std::max(ms, 1e-3)) - l0) / (l1 - l0) * pw2));
+  };
+  s << "<text x=\"" << x1 << "\" y=\"" << y0 - 10 << "\">time per frame (ms, log scale)</text>\n";
+  s << "<line x1=\"" << x1 << "\" y1=\"" << y0 + ph << "\" x2=\"" << x1 + pw2 << "\" y2=\"" << y0 + ph
+    << "\" stroke=\"black\"/>\n";
+  for (double e = l0; e <= l1 + 1e-9; e += 1.0) {
+    const double ms = std::pow(10.0, e);
+    const int x = xt(ms);
+    s << "<line x1=\"" << x << "\" y1=\"" << y0 << "\" x2=\"" << x << "\" y2=\"" << y0 + ph
+      << "\" stroke=\"#ddd\"/><text x=\"" << x << "\" y=\"" << y0 + ph + 18 << "\" text-anchor=\"middle\">"
+      << fmt("%g", ms) << "</text>\n";
+  }
+  for (std::size_t d = 0; d < 2; ++d) {
+    const int yc = y0 + 70 + static_cast<int>(d) * 120;
+    s << "<text x=\"" << x1 << "\" y=\"" << yc - 38 << "\" fill=\"" << colour[d] << "\">" << label[d] << ": median "
+      << fmt("%.3f", det[d]->median_ms()) << " ms, p99 " << fmt("%.3f", det[d]->p99_ms()) << " ms</text>\n";
+    std::size_t k = 0;
+    for (const double t : det[d]->time_ms) {
+      const int jitter = static_cast<int>((k++ * 7919U) % 41U) - 20;  // deterministic spread
+      s << "<circle cx=\"" << xt(t) << "\" cy=\"" << yc + jitter << "\" r=\"1.6\" fill=\"" << colour[d]
+        << "\" fill-opacity=\"0.45\"/>\n";
+    }
+    s << "<line x1=\"" << xt(det[d]->median_ms()) << "\" y1=\"" << yc - 28 << "\" x2=\"" << xt(det[d]->median_ms())
+      << "\" y2=\"" << yc + 28 << "\" stroke=\"black\" stroke-width=\"2\"/>\n";
+    s << "<line x1=\"" << xt(det[d]->p99_ms()) << "\" y1=\"" << yc - 28 << "\" x2=\"" << xt(det[d]->p99_ms())
+      << "\" y2=\"" << yc + 28 << "\" stroke=\"black\" stroke-dasharray=\"4 3\"/>\n";
+  }
+  s << "<text x=\"10\" y=\"" << kH - 12 << "\">" << "Legend: <tspan fill=\"" << colour[0] << "\">■ Ringlet</tspan>  <tspan fill=\""
+    << colour[1] << "\">■ Canny+HoughLinesP</tspan>; speed ratio (median) " << fmt("%.1f", r.speed_ratio())
+    << "x; solid tick median, dashed p99</text>\n";
+  s << "</svg>\n";
+  return s.str();
+}
+
+}  // namespace ringlet::vision::evaluate

@@ -1,0 +1,95 @@
+// ringlet-vision-eval: Ringlet's line detector against OpenCV's Canny + HoughLinesP on a folder
+// written by ringlet-dataset (frame_NNNN.png + frame_NNNN.json). For every frame: the pipeline on
+// the YUYV the robot's camera would give (hal::bgr_to_yuyv of the PNG) with the frame's camera and
+// head, and Canny + HoughLinesP on the BGR picture with the same horizon mask; both scored against
+// the visible straight line runs by the rule in segment_match.hpp, and timed.
+//
+// Hough's parameters are tuned on the first --tune frames (best F1 of HoughParams::candidates());
+// both detectors are then reported on the remaining frames only, so nothing is scored on the
+// frames it was tuned on.
+//
+// Exit codes: 0 done · 2 bad input (flags, folder, frame records, images, colour table, too few
+// frames) · 1 internal or output error (cannot write --json or --svg).
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <unistd.h>
+
+#include "evaluation.hpp"
+#include "report.hpp"
+#include "vision_io.hpp"
+
+namespace {
+
+using namespace ringlet::vision;
+
+bool write_file(const std::string& path, const std::string& text) {
+  std::ofstream file(path);
+  file << text;
+  if (!file) {
+    std::cerr << "ringlet-vision-eval: " << path << ": cannot write\n";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  evaluate::EvalOptions o;
+  std::string dataset, lut, json, svg;
+  bool quiet = false;
+  CLI::App app{"ringlet-vision-eval: compare Ringlet's field-line detector with Canny + HoughLinesP on a "
+               "ringlet-dataset folder (precision, recall, F1, errors, time per frame). Exit codes: 0 done, "
+               "2 bad input, 1 internal or output error."};
+  app.add_option("dataset", dataset, "folder written by ringlet-dataset (png format)")->required();
+  app.add_option("--lut", lut, "colour table for Ringlet (default: the built-in default thresholds)");
+  app.add_option("--tune", o.tune_frames, "Hough is tuned on this many first frames, which are then left out of "
+                                          "the report (0: OpenCV-style defaults, report on all)")
+      ->capture_default_str()->check(CLI::Range(0, 1000000));
+  app.add_option("--max-frames", o.max_frames, "use only the first N frames (0: all)")->capture_default_str()
+      ->check(CLI::Range(0, 1000000));
+  app.add_option("--max-angle", o.match.max_angle_deg, "matching: max angle (deg)")->capture_default_str();
+  app.add_option("--max-distance", o.match.max_distance_px, "matching: endpoint distance (px) beyond the half width")
+      ->capture_default_str();
+  app.add_option("--min-coverage", o.match.min_coverage, "matching: share of a true segment to cover for recall")
+      ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  app.add_option("--json", json, "write the full report (per-frame times, tuning) as JSON");
+  app.add_option("--svg", svg, "write a comparison chart (SVG)");
+  app.add_flag("-q,--quiet", quiet, "no progress output");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  o.dataset = dataset;
+  o.lut = lut;
+  if (!quiet) {
+    const bool tty = isatty(fileno(stderr)) != 0;
+    o.progress = [tty](const char* stage, std::size_t done, std::size_t total) {
+      if (tty) {
+        std::fprintf(stderr, "\rringlet-vision-eval: %s %zu/%zu   ", stage, done, total);
+        if (done == total) std::fputc('\n', stderr);
+      } else if (done == total || (total >= 10 && done % (total / 10) == 0)) {
+        std::fprintf(stderr, "ringlet-vision-eval: %s %zu/%zu\n", stage, done, total);
+      }
+    };
+  }
+  try {
+    const evaluate::EvalReport report = evaluate::run_evaluation(o);
+    evaluate::print_report(report, std::cout);
+    if (!json.empty() && !write_file(json, evaluate::report_json(report).dump(2) + "\n")) return 1;
+    if (!svg.empty() && !write_file(svg, evaluate::report_svg(report))) return 1;
+    return 0;
+  } catch (const tools::ToolError& e) {
+    std::cerr << "ringlet-vision-eval: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "ringlet-vision-eval: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}
