@@ -68,7 +68,7 @@ TEST(Ransac, RecoversTwoLinesAmongOutliers) {
   add_line(pts, b0, b1, 300, rng);
   add_outliers(pts, 100, rng);
   const LineSet out = run(pts, {});
-  EXPECT_EQ(out.stats.points_used, 80);  // every 10th of 800
+  EXPECT_EQ(out.stats.points_used, 80);  // the first round's trials: every 10th of 800
   ASSERT_GE(out.count, 2U);
   int found_a = 0, found_b = 0;
   for (std::size_t i = 0; i < out.count; ++i) {
@@ -112,23 +112,53 @@ TEST(Ransac, DeterministicPerSeedAndFrame) {
 TEST(Ransac, RespectsMaxTrialsAndSkip) {
   SplitMix64 rng(3);
   std::vector<CandidatePoint> pts;
-  add_line(pts, {2.0, -2.0}, {2.0, 2.0}, 95, rng, 0.0);
+  add_line(pts, {2.0, -2.0}, {2.0, 2.0}, 800, rng, 0.0);
   RansacParams p;
   p.max_lines = 1;
   LineSet out = run(pts, p);
-  EXPECT_EQ(out.stats.points_in, 95);
-  EXPECT_EQ(out.stats.points_used, 10);  // indices 0, 10, ..., 90
+  EXPECT_EQ(out.stats.points_in, 800);
+  EXPECT_EQ(out.stats.points_used, 80);  // RANSAC_SKIP: indices 0, 10, ..., 790
   EXPECT_EQ(out.stats.trials_run, 30);   // MAX_TRIALS for the one line
   ASSERT_EQ(out.count, 1U);
-  EXPECT_EQ(out.lines[0].inliers, 10);
+  EXPECT_EQ(out.lines[0].inliers, 800) << "the chosen line is measured on every candidate";
   p.max_trials = 7;
   p.skip = 3;
   p.max_lines = 8;
   out = run(pts, p);
-  EXPECT_EQ(out.stats.points_used, 32);
+  EXPECT_EQ(out.stats.points_used, 267);  // every 3rd of 800
   // One round finds the line and takes every point; the pool is then empty, so no more rounds.
   EXPECT_EQ(out.stats.trials_run, 7);
   EXPECT_EQ(out.stats.lines_extracted, 1);
+}
+
+TEST(Ransac, TheSampleIsNeverThinnerThanMinSamplePoints) {
+  // 95 points with skip 10 would leave 10 for the trials; the sample keeps 40 at least, so the
+  // step becomes 95 / 40 = 2 and 48 points are tried.
+  SplitMix64 rng(3);
+  std::vector<CandidatePoint> pts;
+  add_line(pts, {2.0, -0.5}, {2.0, 0.5}, 95, rng, 0.0);
+  RansacParams p;
+  p.max_lines = 1;
+  const LineSet out = run(pts, p);
+  EXPECT_EQ(out.stats.points_used, 48);
+  ASSERT_EQ(out.count, 1U);
+  EXPECT_EQ(out.lines[0].inliers, 95);
+}
+
+TEST(Ransac, SparseSupportForItsImageLengthIsNoLine) {
+  // 12 points spread along 4 m of ground: far too few for the hundreds of pixels the segment
+  // spans, as clutter lined up by chance would be; 400 points on the same segment are a line.
+  SplitMix64 rng(9);
+  std::vector<CandidatePoint> sparse;
+  add_line(sparse, {1.0, -2.0}, {1.0, 2.0}, 12, rng, 0.0);
+  RansacParams p;
+  p.min_inliers = 5;
+  const LineSet a = run(sparse, p);
+  EXPECT_EQ(a.count, 0U);
+  EXPECT_GE(a.stats.sparse_rejected, 1);
+  std::vector<CandidatePoint> dense;
+  add_line(dense, {1.0, -2.0}, {1.0, 2.0}, 400, rng, 0.0);
+  EXPECT_EQ(run(dense, p).count, 1U);
 }
 
 TEST(Ransac, GapSplitsALine) {
@@ -212,7 +242,7 @@ TEST(Ransac, ImageEndpointsAreTheProjectedGroundEndpoints) {
   EXPECT_NEAR(f.image_end.v, kK.cy + kK.fy * 0.25, 1e-6);
   EXPECT_NEAR(f.image_start.u, kK.cx - kK.fx * f.ground_start.y / 2.0, 1e-6);
   EXPECT_NEAR(f.image_end.u, kK.cx - kK.fx * f.ground_end.y / 2.0, 1e-6);
-  EXPECT_NEAR(std::abs(f.ground_end.y - f.ground_start.y), 0.95, 0.03);
+  EXPECT_NEAR(std::abs(f.ground_end.y - f.ground_start.y), 1.0, 0.02) << "the whole segment, from every candidate";
 }
 
 }  // namespace

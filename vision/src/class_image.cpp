@@ -4,6 +4,33 @@
 #include "ringlet/vision/class_image.hpp"
 
 namespace ringlet::vision {
+namespace {
+
+// One YUYV row, for a table of Bits bits per channel known at compile time: the pixel pair's U and
+// V part of the index is computed once, so each pixel costs one shift, one or and one load.
+template <int Bits>
+void classify_yuyv_row(const std::uint8_t* in, std::uint8_t* out, std::size_t w, const std::uint8_t* lut) noexcept {
+  constexpr int kShift = 8 - Bits;
+  for (std::size_t x = 0; x + 1 < w; x += 2) {
+    const std::uint8_t* p = in + 2 * x;  // Y0 U Y1 V
+    const std::size_t uv = (static_cast<std::size_t>(p[1] >> kShift) << Bits) | static_cast<std::size_t>(p[3] >> kShift);
+    out[x] = lut[(static_cast<std::size_t>(p[0] >> kShift) << (2 * Bits)) | uv];
+    out[x + 1] = lut[(static_cast<std::size_t>(p[2] >> kShift) << (2 * Bits)) | uv];
+  }
+}
+
+using RowClassifier = void (*)(const std::uint8_t*, std::uint8_t*, std::size_t, const std::uint8_t*) noexcept;
+
+RowClassifier yuyv_row_classifier(int bits) noexcept {
+  switch (bits) {
+    case 4: return classify_yuyv_row<4>;
+    case 5: return classify_yuyv_row<5>;
+    case 7: return classify_yuyv_row<7>;
+    default: return classify_yuyv_row<6>;
+  }
+}
+
+}  // namespace
 
 ClassImage::ClassImage(int width, int height)
     : width_(std::max(width, 0)),
@@ -22,17 +49,14 @@ bool ClassImage::classify(const hal::FrameView& frame, const ColourTable& table,
            static_cast<std::size_t>(v >> s);
   };
   const auto w = static_cast<std::size_t>(width_);
+  const RowClassifier yuyv_row = yuyv_row_classifier(bits);
   for (int y = first_row_; y < height_; y += step_) {
     const std::uint8_t* in = frame.data + static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.stride);
     std::uint8_t* out = data_.data() + static_cast<std::size_t>(y) * w;
     switch (frame.format) {
       case hal::PixelFormat::kYuyv:
         if (step_ == 1) {
-          for (std::size_t x = 0; x + 1 < w; x += 2) {
-            const std::uint8_t* p = in + 2 * x;  // Y0 U Y1 V
-            out[x] = lut[idx(p[0], p[1], p[3])];
-            out[x + 1] = lut[idx(p[2], p[1], p[3])];
-          }
+          yuyv_row(in, out, w, lut);
           if ((w & 1U) != 0) out[w - 1] = lut[idx(in[2 * (w - 1)], in[2 * (w - 1) + 1], 128)];
         } else {
           for (std::size_t x = 0; x < w; x += 2) {

@@ -72,7 +72,7 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
   if (scanned && may_run(Stage::kRansac)) {
     LineSet lines;
     ransac_.find(candidates_.points(), frame.sequence, k, pose, deadline, lines, level.max_trials, level.max_lines,
-                 level.ransac_skip);
+                 level.ransac_skip, level.scan_stride);
     r.lines = lines.lines;
     r.line_count = lines.count;
     r.circle = lines.circle;

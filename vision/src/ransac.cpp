@@ -20,6 +20,7 @@ RansacScratch::RansacScratch(std::size_t capacity) {
   points_.reserve(capacity);
   pixels_.reserve(capacity);
   pool_.reserve(capacity);
+  sample_.reserve(capacity);
   inliers_.reserve(capacity);
   circle_members_.reserve(capacity);
   arc_.reserve(capacity);
@@ -41,7 +42,7 @@ void RansacLineFinder::remove_from_pool(std::span<const int> members) noexcept {
 
 void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
                             const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials,
-                            int max_lines, int skip_override) noexcept {
+                            int max_lines, int skip_override, int scan_stride) noexcept {
   out.count = 0;
   out.circle = CentreCircle{};
   out.stats = RansacStats{};
@@ -51,20 +52,29 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
   s.pixels_.clear();
   s.pool_.clear();
   const auto skip = static_cast<std::size_t>(std::max(skip_override >= 1 ? skip_override : params_.skip, 1));
-  for (std::size_t i = 0; i < candidates.size() && s.points_.size() < s.points_.capacity(); i += skip) {
+  for (std::size_t i = 0; i < candidates.size() && s.points_.size() < s.points_.capacity(); ++i) {
     s.pool_.push_back(static_cast<int>(s.points_.size()));
     s.points_.push_back(candidates[i].ground);
     s.pixels_.push_back(candidates[i].pixel);
   }
   st.points_in = static_cast<int>(candidates.size());
-  st.points_used = static_cast<int>(s.points_.size());
   const int trials = max_trials >= 0 ? max_trials : params_.max_trials;
   const int rounds_cap = std::clamp(max_lines >= 0 ? max_lines : params_.max_lines, 0, static_cast<int>(kMaxLines));
   const auto min_inliers = static_cast<std::size_t>(std::max(params_.min_inliers, 2));
+  const auto min_sampled = static_cast<std::size_t>(std::max(params_.min_sampled_inliers, 2));
   SplitMix64 rng = SplitMix64::for_frame(params_.seed, frame);
 
   int rounds = 0;
   while (rounds < rounds_cap && s.pool_.size() >= min_inliers) {
+    // RANSAC_SKIP: this round's trials see every skip-th unassigned point only.
+    // Never thinner than min_sample_points: once the long lines are out, the short ones left
+    // need their points in the sample to be found at all.
+    const std::size_t step = std::max<std::size_t>(
+        1, std::min(skip, s.pool_.size() / static_cast<std::size_t>(std::max(params_.min_sample_points, 1))));
+    s.sample_.clear();
+    for (std::size_t i = 0; i < s.pool_.size(); i += step) s.sample_.push_back(s.pool_[i]);
+    if (rounds == 0) st.points_used = static_cast<int>(s.sample_.size());
+    if (s.sample_.size() < min_sampled) break;
     std::size_t best = 0;
     Line2 best_line;
     int t = 0;
@@ -74,17 +84,17 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
         break;
       }
       ++st.trials_run;
-      const std::size_t n = s.pool_.size();
+      const std::size_t n = s.sample_.size();
       const auto i = static_cast<std::size_t>(rng.below(n));
       auto j = static_cast<std::size_t>(rng.below(n - 1));
       if (j >= i) ++j;
-      const hal::RobotPoint a = s.points_[static_cast<std::size_t>(s.pool_[i])];
-      const hal::RobotPoint b = s.points_[static_cast<std::size_t>(s.pool_[j])];
+      const hal::RobotPoint a = s.points_[static_cast<std::size_t>(s.sample_[i])];
+      const hal::RobotPoint b = s.points_[static_cast<std::size_t>(s.sample_[j])];
       const double len = norm(b.x - a.x, b.y - a.y);
       if (len < 1e-6) continue;
       const Line2 hypothesis{a, (b.x - a.x) / len, (b.y - a.y) / len};
       std::size_t count = 0;
-      for (const int p : s.pool_) {
+      for (const int p : s.sample_) {
         const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
         if (std::abs(hypothesis.signed_distance(q)) <= tolerance(q)) ++count;
       }
@@ -95,7 +105,7 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
     }
     st.trials_skipped += trials - t;
     // A cut round still uses its best hypothesis so far: degrade, do not discard.
-    if (best < min_inliers) break;
+    if (best < min_sampled) break;
 
     const auto collect = [&](const Line2& l) {
       s.inliers_.clear();
@@ -104,7 +114,9 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
         if (std::abs(l.signed_distance(q)) <= tolerance(q)) s.inliers_.push_back(p);
       }
     };
+    // From here on every candidate counts: the fit, the endpoints and the gaps are dense.
     collect(best_line);
+    if (s.inliers_.size() < min_inliers) break;
     Line2 line = best_line;
     if (const auto refined = fit_line_tls({s.points_, s.inliers_})) {
       line = *refined;
@@ -115,7 +127,7 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
       }
     }
     ++rounds;
-    if (add_pieces(line, k, pose, out)) ++st.lines_extracted;
+    if (add_pieces(line, k, pose, std::max(scan_stride, 1), out)) ++st.lines_extracted;
     remove_from_pool(s.inliers_);
     if (st.stopped_early) break;
   }
@@ -193,7 +205,7 @@ bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece,
 }
 
 bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
-                                  LineSet& out) noexcept {
+                                  int scan_stride, LineSet& out) noexcept {
   auto& s = scratch_;
   s.order_.clear();
   for (const int p : s.inliers_) s.order_.emplace_back(line.along(s.points_[static_cast<std::size_t>(p)]), p);
@@ -213,16 +225,24 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
       ++out.stats.segments_dropped;
       return;
     }
+    const hal::RobotPoint g0 = line.at(t0);
+    const hal::RobotPoint g1 = line.at(t1);
+    const auto p0 = hal::project(k, pose, {g0.x, g0.y, 0.0});
+    const auto p1 = hal::project(k, pose, {g1.x, g1.y, 0.0});
+    const hal::Pixel i0 = p0 ? *p0 : s.pixels_[static_cast<std::size_t>(s.order_[first].second)];
+    const hal::Pixel i1 = p1 ? *p1 : s.pixels_[static_cast<std::size_t>(s.order_[last].second)];
+    if (count < params_.min_support * norm(i1.u - i0.u, i1.v - i0.v) / scan_stride) {
+      ++out.stats.sparse_rejected;
+      return;
+    }
     any = true;
     FieldLine& f = out.lines[out.count++];
-    f.ground_start = line.at(t0);
-    f.ground_end = line.at(t1);
+    f.ground_start = g0;
+    f.ground_end = g1;
     f.length_m = t1 - t0;
     f.inliers = count;
-    const auto p0 = hal::project(k, pose, {f.ground_start.x, f.ground_start.y, 0.0});
-    const auto p1 = hal::project(k, pose, {f.ground_end.x, f.ground_end.y, 0.0});
-    f.image_start = p0 ? *p0 : s.pixels_[static_cast<std::size_t>(s.order_[first].second)];
-    f.image_end = p1 ? *p1 : s.pixels_[static_cast<std::size_t>(s.order_[last].second)];
+    f.image_start = i0;
+    f.image_end = i1;
   };
   std::size_t first = 0;
   for (std::size_t i = 1; i <= s.order_.size(); ++i) {

@@ -45,7 +45,7 @@ struct VisionConfig {
   // Level 0 = full (the RansacParams: Mi-Pal's 30 trials, skip 10); 1 = every other pixel
   // classified, scan lines twice as far apart, half the trials; 2 = least.
   std::array<DegradeProfile, kDegradeLevels> degrade{{
-      {1, 2, -1, -1, 4, -1},
+      {1, 3, -1, -1, 4, -1},
       {2, 4, 15, 6, 6, 5},
       {2, 8, 8, 4, 8, 3},
   }};

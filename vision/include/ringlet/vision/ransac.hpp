@@ -22,13 +22,20 @@ inline constexpr std::size_t kMaxLines = 12;
 
 struct RansacParams {
   int max_trials = 30;               // MAX_TRIALS: two-point hypotheses per extracted line
-  int skip = 10;                     // RANSAC_SKIP: candidate i is used only if i % skip == 0
-  int max_lines = 8;                 // extraction rounds (≤ kMaxLines segments are reported)
-  int min_inliers = 5;               // a line (and each piece of it) needs this many used points
+  int skip = 10;                     // RANSAC_SKIP: hypotheses are drawn from, and scored on, every
+                                     //   skip-th point still unassigned; the chosen line is then
+                                     //   refitted, cut and measured on every candidate point
+  int max_lines = 12;                // extraction rounds (≤ kMaxLines segments are reported)
+  int min_sample_points = 40;        // ... but the sample is never thinned below this many points
+  int min_sampled_inliers = 2;       // a hypothesis needs this many sampled points to be tried
+  int min_inliers = 6;               // a line (and each piece of it) needs this many candidates
   double inlier_base_m = 0.04;       // inlier tolerance = base + per_m × range of the point: the
   double inlier_per_m = 0.015;       //   ground footprint of a pixel grows with distance
-  double min_length_m = 0.25;        // shorter pieces are dropped
-  double split_gap_m = 0.6;          // a gap longer than this between consecutive inliers splits
+  double min_length_m = 0.15;        // shorter pieces are dropped
+  double min_support = 0.45;         // inliers per scan line the piece's image crosses (its image
+                                     //   length / scan stride): a painted line yields a candidate
+                                     //   on most of them; clutter lined up by chance, on few
+  double split_gap_m = 0.5;          // a gap longer than this between consecutive inliers splits
   double merge_angle_deg = 5.0;      // collinear merge: directions within this angle, and
   double merge_offset_m = 0.10;      //   each segment's endpoints this close to the other's line,
                                      //   and their gap along it below split_gap_m
@@ -58,7 +65,8 @@ struct CentreCircle {
 
 struct RansacStats {
   int points_in = 0;             // candidates offered
-  int points_used = 0;           // after skip
+  int points_used = 0;           // the first round's sample (every skip-th candidate)
+  int sparse_rejected = 0;       // pieces with too little support for their image length
   int trials_run = 0;
   int trials_skipped = 0;        // cut by the deadline
   int lines_extracted = 0;       // extraction rounds that produced a segment (before merging)
@@ -85,7 +93,8 @@ class RansacScratch {
   friend class RansacLineFinder;
   std::vector<hal::RobotPoint> points_;   // used points (ground)
   std::vector<hal::Pixel> pixels_;        // their image positions
-  std::vector<int> pool_;                 // indices still unassigned
+  std::vector<int> pool_;                 // indices still unassigned (every candidate)
+  std::vector<int> sample_;               // every skip-th index of pool_: the RANSAC trials' points
   std::vector<int> inliers_;
   std::vector<int> circle_members_;
   std::vector<int> arc_;    // the part of a piece on its fitted circle
@@ -102,7 +111,7 @@ class RansacLineFinder {
   /// endpoints with (k, pose). The deadline is checked before every trial.
   void find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
             const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials = -1,
-            int max_lines = -1, int skip = -1) noexcept;
+            int max_lines = -1, int skip = -1, int scan_stride = 3) noexcept;
 
   [[nodiscard]] const RansacParams& params() const noexcept { return params_; }
 
@@ -110,7 +119,8 @@ class RansacLineFinder {
   [[nodiscard]] double tolerance(const hal::RobotPoint& p) const noexcept;
   bool try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept;
   /// Emits the line's gap-free pieces (arcs go to the circle instead); true if any was emitted.
-  bool add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose, LineSet& out) noexcept;
+  bool add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose, int scan_stride,
+                  LineSet& out) noexcept;
   void merge(LineSet& out, const hal::CameraIntrinsics& k, const hal::CameraPose& pose) const noexcept;
   void remove_from_pool(std::span<const int> members) noexcept;
 
