@@ -1,13 +1,11 @@
-// run_turn never allocates: the global operator new is replaced to count, and a schedule of the
-// shipped machines runs through state changes, suspensions and FsmControl requests.
+// run_turn never allocates: allocations are counted (tests/support/allocation_counter) while
+// a schedule of the shipped machines runs through state changes, suspensions and FsmControl requests.
 #include <gtest/gtest.h>
 
 #include <array>
-#include <atomic>
 #include <chrono>
-#include <cstdlib>
-#include <new>
 
+#include "allocation_counter.hpp"
 #include "ringlet/behaviour/llfsm/schedule.hpp"
 #include "ringlet/behaviour/llfsm/whiteboard_bus.hpp"
 #include "ringlet/behaviour/machines/ball_tracker.hpp"
@@ -15,17 +13,6 @@
 #include "ringlet/behaviour/machines/safety.hpp"
 #include "ringlet/hal/virtual_clock.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace ringlet::behaviour::machines {
 namespace {
@@ -47,7 +34,7 @@ TEST(LlfsmAllocation, TurnsDoNotAllocate) {
   sched.add(safety, 2);
   sched.start();
 
-  const long before = g_allocations.load();
+  const std::uint64_t before = ringlet::test::allocations();
   wb::Pose pose{};
   pose.valid = true;
   wb::LaserSummary laser{};
@@ -70,7 +57,7 @@ TEST(LlfsmAllocation, TurnsDoNotAllocate) {
     }
     sched.run_turn(std::chrono::milliseconds(10 * turn));
   }
-  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(ringlet::test::allocations() - before, 0U);
   EXPECT_GT(tracker.ringlets(), 100u);
   EXPECT_GT(safety.local_stops(), 2u);
 }

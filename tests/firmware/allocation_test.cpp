@@ -1,48 +1,19 @@
 // The cycle allocates nothing: the full simulated stack (sense with laser ray casting, the LLFSM
 // schedule, actuate, telemetry, whiteboard dispatch, executive statistics) runs N frames while
-// every operator new in the process is counted. The counter replaces the global allocation functions for this test binary only.
+// every operator new in the process is counted (tests/support/allocation_counter).
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
+#include <memory>
 #include <vector>
 
+#include "allocation_counter.hpp"
 #include "firmware_test_support.hpp"
 #include "ringlet/firmware/stack.hpp"
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<std::uint64_t> g_allocations{0};
-
-void* counted_alloc(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t size) { return counted_alloc(size); }
-void* operator new[](std::size_t size) { return counted_alloc(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace ringlet::firmware {
 namespace {
 
-class AllocationCounter {
- public:
-  AllocationCounter() {
-    g_allocations.store(0);
-    g_counting.store(true);
-  }
-  ~AllocationCounter() { g_counting.store(false); }
-  AllocationCounter(const AllocationCounter&) = delete;
-  AllocationCounter& operator=(const AllocationCounter&) = delete;
-  [[nodiscard]] std::uint64_t count() const { return g_allocations.load(); }
-};
+using ringlet::test::AllocationCounter;
 
 TEST(NoAllocation, TheCounterSeesAnAllocation) {
   // Guards the test below against a counter that never counts.

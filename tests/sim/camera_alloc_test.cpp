@@ -1,50 +1,19 @@
 // The simulated camera allocates nothing per frame: rendering, ground truth, the hand-over to the
 // render thread and delivery all use buffers sized at construction. Every operator new in the
-// process (the render thread's too) is counted; the counter replaces the global allocation
-// functions for this test binary only.
+// process (the render thread's too) is counted (tests/support/allocation_counter).
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
 #include <memory>
-#include <new>
 #include <vector>
 
+#include "allocation_counter.hpp"
 #include "ringlet/sim/camera_renderer.hpp"
 #include "ringlet/sim/sim_robot.hpp"
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<std::uint64_t> g_allocations{0};
-
-void* counted_alloc(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t size) { return counted_alloc(size); }
-void* operator new[](std::size_t size) { return counted_alloc(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace ringlet::sim {
 namespace {
 
-class AllocationCounter {
- public:
-  AllocationCounter() {
-    g_allocations.store(0);
-    g_counting.store(true);
-  }
-  ~AllocationCounter() { g_counting.store(false); }
-  AllocationCounter(const AllocationCounter&) = delete;
-  AllocationCounter& operator=(const AllocationCounter&) = delete;
-  [[nodiscard]] std::uint64_t count() const { return g_allocations.load(); }
-};
+using ringlet::test::AllocationCounter;
 
 World spl_field() { return load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"); }
 

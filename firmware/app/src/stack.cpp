@@ -90,7 +90,10 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config)
     if (owned_camera_) camera_ = owned_camera_.get();
     if (camera_ == nullptr) throw ConfigError(config_.source.string() + ": camera: the backend has no camera");
     pipeline_ = make_vision(config_);
-    vision_task_.emplace(*camera_, *pipeline_, state_, board_, config_.executive.overrun_on_cpu_time);
+    const VisionDeadline deadline = config_.clock == ClockMode::kLockstep ? VisionDeadline::kNone
+                                    : config_.executive.overrun_on_cpu_time ? VisionDeadline::kCpu
+                                                                            : VisionDeadline::kWall;
+    vision_task_.emplace(*camera_, *pipeline_, state_, board_, deadline);
     provided.emplace_back("vision", &*vision_task_);
   }
   auto tasks = bind_tasks(config_.tasks, provided, config_.source.string());

@@ -57,7 +57,9 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   have_frame_ = true;
   last_sequence_ = frame.sequence;
   const vision::Deadline deadline =
-      vision::Deadline::after(*ctx.stopwatch, ctx.time_left(), budget_on_cpu_);
+      deadline_ == VisionDeadline::kNone
+          ? vision::Deadline{}
+          : vision::Deadline::after(*ctx.stopwatch, ctx.time_left(), deadline_ == VisionDeadline::kCpu);
   const vision::VisionResult& r =
       pipeline_.process(frame, state_.head_history.at(frame.capture_time), deadline, ctx.degrade_level);
   ++stats_.frames;

@@ -50,14 +50,20 @@ struct VisionStats {
   std::uint64_t missed_frames = 0;      // sequence gaps: frames the camera had that were never processed
 };
 
+/// How the vision task honours its deadline. On the real clock the pipeline stops work when the
+/// task's time is up. In lockstep simulation it never does: a cut there would depend on how busy
+/// the host is, and a simulated run must be bit-identical for a seed; the executive still
+/// measures the task against its budget and reports (and acts on) overruns.
+enum class VisionDeadline : std::uint8_t { kNone, kWall, kCpu };
+
 /// Camera → vision pipeline → whiteboard (FieldLines, BallBelief). Runs when the table says
 /// (every camera period); processes the newest frame once, with the head posture of its capture
 /// time, inside the task's deadline (and at the executive's degrade level).
 class VisionTask final : public executive::Task {
  public:
   VisionTask(hal::Camera& camera, vision::VisionPipeline& pipeline, const CycleState& state, wb::Whiteboard& board,
-             bool budget_on_cpu) noexcept
-      : camera_(camera), pipeline_(pipeline), state_(state), board_(board), budget_on_cpu_(budget_on_cpu) {}
+             VisionDeadline deadline) noexcept
+      : camera_(camera), pipeline_(pipeline), state_(state), board_(board), deadline_(deadline) {}
   void run(const executive::TaskContext& ctx) noexcept override;
   [[nodiscard]] const VisionStats& stats() const noexcept { return stats_; }
 
@@ -66,7 +72,7 @@ class VisionTask final : public executive::Task {
   vision::VisionPipeline& pipeline_;
   const CycleState& state_;
   wb::Whiteboard& board_;
-  bool budget_on_cpu_;
+  VisionDeadline deadline_;
   bool have_frame_ = false;
   std::uint64_t last_sequence_ = 0;
   VisionStats stats_{};
