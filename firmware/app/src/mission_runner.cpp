@@ -102,7 +102,11 @@ RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomi
     hal::MonotonicClock watchdog_clock;  // the watchdog always watches real time
     std::optional<executive::WatchdogThread> watchdog;
     if (cfg.executive.watchdog_periods > 0) {
-      const auto timeout = cfg.executive.period * cfg.executive.watchdog_periods;
+      // On the real clock a frame is due every period, so a few missed periods mean a stall. In
+      // lockstep a frame takes whatever the host needs (rendering, a sanitizer, qemu), so there
+      // the watchdog only catches a real stall: at least a second without a frame.
+      auto timeout = cfg.executive.period * cfg.executive.watchdog_periods;
+      if (cfg.clock == ClockMode::kLockstep) timeout = std::max<hal::Nanos>(timeout, std::chrono::seconds{1});
       const auto poll = std::max(cfg.executive.period / 2, hal::Nanos{1'000'000});
       watchdog.emplace(watchdog_clock, exec.heartbeat(), actuators, timeout, poll, &interrupt);
     }
