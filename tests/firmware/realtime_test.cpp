@@ -25,7 +25,9 @@ TEST(RealClock, TwoSecondsAt100HzKeepEveryTaskP99CpuInsideItsBudget) {
   exec.run(kFrames);
 
   const auto& frames = exec.frame_stats();
-  EXPECT_EQ(frames.frames + frames.slips, kFrames);
+  // Every frame number up to the limit was run or slipped (a late last frame may slip a few more).
+  EXPECT_GE(frames.frames + frames.slips, kFrames);
+  EXPECT_LE(frames.frames, kFrames);
   const double slowdown = test::kCpuSlowdown;
   std::printf("real clock, %llu frames (slowdown factor for budgets: %.0f)\n",
               static_cast<unsigned long long>(frames.frames), slowdown);
