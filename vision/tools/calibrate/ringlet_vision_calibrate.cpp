@@ -198,19 +198,5 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingDirectory);
   app.add_option("--json", o.json, "also write the confusion as JSON here");
   app.add_flag("-q,--quiet", o.quiet, "no progress output");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
-  try {
-    return run(o);
-  } catch (const tools::ToolError& e) {
-    std::cerr << "ringlet-vision-calibrate: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "ringlet-vision-calibrate: internal error: " << e.what() << "\n";
-    return 1;
-  }
+  return tools::run_tool(app, argc, argv, "ringlet-vision-calibrate", [&] { return run(o); });
 }

@@ -87,19 +87,5 @@ int main(int argc, char** argv) {
       ->capture_default_str()->check(CLI::Range(1, 1000));
   app.add_flag("--compact", o.compact, "one-line JSON");
   o.camera.add_to(app);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
-  try {
-    return run(o);
-  } catch (const tools::ToolError& e) {
-    std::cerr << "ringlet-vision: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "ringlet-vision: internal error: " << e.what() << "\n";
-    return 1;
-  }
+  return tools::run_tool(app, argc, argv, "ringlet-vision", [&] { return run(o); });
 }

@@ -1,6 +1,7 @@
 #include "vision_io.hpp"
 
 #include <cmath>
+#include <iostream>
 #include <numbers>
 
 #include <opencv2/imgcodecs.hpp>
@@ -123,6 +124,23 @@ void draw_result(cv::Mat& bgr, const VisionResult& r, const hal::CameraIntrinsic
   }
   if (r.ball.seen) {
     cv::circle(bgr, pt(r.ball.centre), static_cast<int>(std::lround(r.ball.radius_px)) + 2, {0, 140, 255}, 2);
+  }
+}
+
+int run_tool(CLI::App& app, int argc, char** argv, std::string_view name, const std::function<int()>& body) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  try {
+    return body();
+  } catch (const ToolError& e) {
+    std::cerr << name << ": " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << name << ": internal error: " << e.what() << "\n";
+    return 1;
   }
 }
 

@@ -2,6 +2,8 @@
 // What the vision tools share: image files in (with the errors a person needs), a pipeline's
 // result as JSON and drawn over the image, and the camera options every tool takes.
 #include <filesystem>
+#include <functional>
+#include <string_view>
 #include <stdexcept>
 #include <string>
 
@@ -49,6 +51,12 @@ struct CameraOptions {
 };
 
 [[nodiscard]] nlohmann::json result_json(const VisionResult& result);
+
+/// Every vision tool's main: parses the command line, then runs `body`, turning failures into the
+/// tools' exit codes — 0 for --help, 2 for bad flags or bad input (ToolError, printed as
+/// "<name>: <message>"), 1 for anything else (printed as an internal error).
+[[nodiscard]] int run_tool(CLI::App& app, int argc, char** argv, std::string_view name,
+                           const std::function<int()>& body);
 
 /// Draws lines (green, numbered), the centre circle's points and the ball (orange) over `bgr`.
 void draw_result(cv::Mat& bgr, const VisionResult& result, const hal::CameraIntrinsics& k, const hal::CameraPose& pose);

@@ -60,36 +60,24 @@ int main(int argc, char** argv) {
   app.add_option("--json", json, "write the full report (per-frame times, tuning) as JSON");
   app.add_option("--svg", svg, "write a comparison chart (SVG)");
   app.add_flag("-q,--quiet", quiet, "no progress output");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
-  }
-  o.dataset = dataset;
-  o.lut = lut;
-  if (!quiet) {
-    const bool tty = isatty(fileno(stderr)) != 0;
-    o.progress = [tty](const char* stage, std::size_t done, std::size_t total) {
-      if (tty) {
-        std::fprintf(stderr, "\rringlet-vision-eval: %s %zu/%zu   ", stage, done, total);
-        if (done == total) std::fputc('\n', stderr);
-      } else if (done == total || (total >= 10 && done % (total / 10) == 0)) {
-        std::fprintf(stderr, "ringlet-vision-eval: %s %zu/%zu\n", stage, done, total);
-      }
-    };
-  }
-  try {
+  return tools::run_tool(app, argc, argv, "ringlet-vision-eval", [&] {
+    o.dataset = dataset;
+    o.lut = lut;
+    if (!quiet) {
+      const bool tty = isatty(fileno(stderr)) != 0;
+      o.progress = [tty](const char* stage, std::size_t done, std::size_t total) {
+        if (tty) {
+          std::fprintf(stderr, "\rringlet-vision-eval: %s %zu/%zu   ", stage, done, total);
+          if (done == total) std::fputc('\n', stderr);
+        } else if (done == total || (total >= 10 && done % (total / 10) == 0)) {
+          std::fprintf(stderr, "ringlet-vision-eval: %s %zu/%zu\n", stage, done, total);
+        }
+      };
+    }
     const evaluate::EvalReport report = evaluate::run_evaluation(o);
     evaluate::print_report(report, std::cout);
     if (!json.empty() && !write_file(json, evaluate::report_json(report).dump(2) + "\n")) return 1;
     if (!svg.empty() && !write_file(svg, evaluate::report_svg(report))) return 1;
     return 0;
-  } catch (const tools::ToolError& e) {
-    std::cerr << "ringlet-vision-eval: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "ringlet-vision-eval: internal error: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }
