@@ -519,6 +519,23 @@ def generate_header(model, ns, include_path):
     return e.text()
 
 
+def emit_state_switch(e, signature, cases):
+    """A member function that runs, for the current state, that state's statements (cases: a list
+    of (state name, statements)); other states do nothing."""
+    e(f"{signature} {{")
+    e("  switch (s) {")
+    for name, statements in cases:
+        e(f"    case kState{name}:")
+        for statement in statements:
+            e("      " + statement)
+        e("      break;")
+    e("    default:")
+    e("      break;")
+    e("  }")
+    e("}")
+    e()
+
+
 def constructor_params(model):
     """The whiteboard, then every parameter in declaration order."""
     return ", ".join(["::ringlet::wb::Whiteboard& wb"] + [
@@ -561,34 +578,14 @@ def generate_source(model, ns, include_path, model_path, out_name):
     # READ footprint in, WRITE footprint out.
     for hook, attr, stmt in [("snapshot", "reads", "{m} = wb_.get<{t}>();"),
                              ("write_back", "writes", "wb_.post<{t}>({m});")]:
-        e(f"void {cls}::{hook}(StateIndex s) noexcept {{")
-        e("  switch (s) {")
-        for s in model.states:
-            if getattr(s, attr):
-                e(f"    case kState{s.name}:")
-                for v in getattr(s, attr):
-                    e("      " + stmt.format(m=v.member, t=wb_type(v.ctype)))
-                e("      break;")
-        e("    default:")
-        e("      break;")
-        e("  }")
-        e("}")
-        e()
+        emit_state_switch(e, f"void {cls}::{hook}(StateIndex s) noexcept",
+                          [(st.name, [stmt.format(m=v.member, t=wb_type(v.ctype)) for v in getattr(st, attr)])
+                           for st in model.states if getattr(st, attr)])
     for section, hook in HOOKS:
         if not any(section in s.actions for s in model.states):
             continue
-        e(f"void {cls}::{hook}(StateIndex s) {{")
-        e("  switch (s) {")
-        for s in model.states:
-            if section in s.actions:
-                e(f"    case kState{s.name}:")
-                e(f"      {s.name}_{section}();")
-                e("      break;")
-        e("    default:")
-        e("      break;")
-        e("  }")
-        e("}")
-        e()
+        emit_state_switch(e, f"void {cls}::{hook}(StateIndex s)",
+                          [(st.name, [f"{st.name}_{section}();"]) for st in model.states if section in st.actions])
     e(f"auto {cls}::fire(StateIndex s) noexcept -> StateIndex {{")
     e("  switch (s) {")
     for s in model.states:
