@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ringlet/vision/ball.hpp"
+#include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/horizon.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "synthetic_field.hpp"
@@ -110,6 +111,11 @@ void BM_Pipeline(benchmark::State& state) {
     benchmark::DoNotOptimize(pipeline.process(view, f.cam.head, {}, level).line_count);
   }
   state.counters["lines"] = static_cast<double>(pipeline.result().line_count);
+  // The cost model (cost_model.hpp) against this host: model_host_us is the modelled cost without
+  // the board factor, to set beside the measured time per frame; a drift of the model shows here.
+  const CostModel model = default_cost_model();
+  state.counters["model_host_us"] =
+      static_cast<double>(modelled_cost(pipeline.result().work, model).count()) / model.board_slowdown / 1000.0;
 }
 BENCHMARK(BM_Pipeline)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 

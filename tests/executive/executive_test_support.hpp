@@ -87,6 +87,11 @@ class ScriptedTask final : public Task {
     hook_ = std::move(f);
     return *this;
   }
+  /// The modelled cost this task reports per activation (judged when judge_on_model is set).
+  ScriptedTask& model_by_activation(std::function<Nanos(std::size_t activation)> f) {
+    model_by_activation_ = std::move(f);
+    return *this;
+  }
   /// Appends "label@frame" to a shared trace at every activation.
   ScriptedTask& trace_into(std::vector<std::string>* trace) {
     trace_ = trace;
@@ -105,7 +110,9 @@ class ScriptedTask final : public Task {
       cost = it->second;
     }
     clock_.advance(cost);
+    model_ = model_by_activation_ ? model_by_activation_(n) : Nanos{0};
   }
+  [[nodiscard]] Nanos modelled_cost() const noexcept override { return model_; }
 
   [[nodiscard]] const std::vector<TaskContext>& activations() const noexcept { return seen_; }
   [[nodiscard]] std::vector<std::uint64_t> frames() const {
@@ -122,6 +129,8 @@ class ScriptedTask final : public Task {
   Nanos cost_;
   std::map<std::uint64_t, Nanos> by_frame_;
   std::function<Nanos(std::size_t)> by_activation_;
+  std::function<Nanos(std::size_t)> model_by_activation_;
+  Nanos model_{0};
   std::function<void(const TaskContext&)> hook_;
   std::vector<std::string>* trace_ = nullptr;
   std::vector<TaskContext> seen_;

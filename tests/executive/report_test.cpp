@@ -130,6 +130,25 @@ TEST(ExecutiveReport, JsonWithoutFailsafeHasNullTask) {
   EXPECT_EQ(j.at("tasks").at(0).at("runs").get<std::uint64_t>(), 3U);
 }
 
+TEST(ExecutiveReport, LockstepReportsTheModelBesideTheMeasuredTime) {
+  Rig rig;
+  rig.add(spec("vision", 1, 0, 1ms), 2ms).model_by_activation([](std::size_t) { return 700us; });
+  ExecutiveConfig cfg;
+  cfg.judge_on_model = true;
+  rig.build(cfg).run(3);
+  const auto j = timing_json(*rig.exec);
+  EXPECT_EQ(j.at("budgets_judged_on").get<std::string>(), "model");
+  EXPECT_EQ(j.at("measured_on").get<std::string>(), "wall");
+  const auto& t = j.at("tasks").at(0);
+  EXPECT_EQ(t.at("overruns").get<std::uint64_t>(), 0U);
+  EXPECT_EQ(t.at("measured_overruns").get<std::uint64_t>(), 3U);
+  EXPECT_DOUBLE_EQ(t.at("model").at("max_us").get<double>(), 700.0);
+  std::ostringstream table;
+  print_timing_table(table, *rig.exec);
+  EXPECT_NE(table.str().find("MODEL-P99"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("budgets judged on the modelled cost (lockstep)"), std::string::npos) << table.str();
+}
+
 TEST(ExecutiveReport, EventsAreDescribedWithNamesAndNumbers) {
   Scenario s;
   std::vector<std::string> lines;

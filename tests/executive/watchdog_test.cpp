@@ -124,8 +124,10 @@ TEST(WatchdogThread, MovingHeartbeatNeverFires) {
   hal::MonotonicClock clock;
   FakeActuators actuators;
   std::atomic<std::uint64_t> heartbeat{0};
-  WatchdogThread dog(clock, heartbeat, actuators, 100ms, 2ms);
-  const auto end = std::chrono::steady_clock::now() + 200ms;
+  // A bump every millisecond against a 1 s timeout: a loaded machine or qemu can delay a sleep
+  // by tens of milliseconds, never by a second.
+  WatchdogThread dog(clock, heartbeat, actuators, 1s, 2ms);
+  const auto end = std::chrono::steady_clock::now() + 300ms;
   while (std::chrono::steady_clock::now() < end) {
     heartbeat.fetch_add(1);
     std::this_thread::sleep_for(1ms);

@@ -24,7 +24,7 @@ TEST(NoAllocation, TheCounterSeesAnAllocation) {
 }
 
 TEST(NoAllocation, FullSimulatedStackAllocatesNothingInTheCycle) {
-  const auto cfg = test::parse_as_shipped(test::warn_only(test::shipped_config_text()));
+  const auto cfg = test::parse_as_shipped(test::shipped_config_text());
   FirmwareStack stack(cfg);
   auto& exec = stack.executive();
   exec.run(1);  // start-up: the first frame may touch lazily initialised state
@@ -43,7 +43,7 @@ TEST(NoAllocation, FullSimulatedStackAllocatesNothingInTheCycle) {
 TEST(NoAllocation, CameraAndVisionAllocateNothingEither) {
   // The main job's stack: the sim camera's render thread and the vision task run as well; the
   // counter sees every thread's allocations.
-  const auto cfg = test::parse_as_shipped(test::warn_only(test::shipped_config_text(test::kSplConfig)));
+  const auto cfg = test::parse_as_shipped(test::shipped_config_text(test::kSplConfig));
   FirmwareStack stack(cfg);
   auto& exec = stack.executive();
   exec.run(30);  // start-up: first frames rendered and processed

@@ -46,15 +46,6 @@ inline std::string with_line(std::string text, const std::string& key, const std
   return out.str();
 }
 
-/// The text with every task's overrun policy set to "warn": for tests of what the robot does,
-/// which must not depend on how fast the build under test happens to run.
-inline std::string warn_only(std::string text) {
-  for (const char* p : {"\"failsafe\"", "\"skip\"", "\"degrade\""}) {
-    for (auto at = text.find(p); at != std::string::npos; at = text.find(p)) text.replace(at, std::string(p).size(), "\"warn\"");
-  }
-  return text;
-}
-
 /// Parses config text as if it were the shipped file (relative paths resolve the same way).
 inline FirmwareConfig parse_as_shipped(const std::string& text) {
   return parse_config(text, kShippedConfig.string(), kShippedConfig.parent_path());

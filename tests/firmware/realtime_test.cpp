@@ -1,18 +1,30 @@
 // The full simulated stack (camera and vision included) on the REAL clock for 2 s at 100 Hz: the
-// executive sleeps to absolute deadlines with clock_nanosleep and measures every task. Asserted: each task's p99 thread CPU
-// time is inside its budget (CPU time does not depend on what else this shared machine is doing).
-// Wall-clock figures are printed for the record, never asserted.
+// executive sleeps to absolute deadlines with clock_nanosleep and measures every task. Asserted:
+// each task's p99 thread CPU time is inside its budget. Thread CPU time does not count the time
+// the thread waits for a core, so it hardly depends on what else the machine does; it does grow
+// noisier under load (caches and memory bandwidth are shared), see kLoadedQuantile.
+// The binary runs serially (RUN_SERIAL). Wall-clock figures are printed, never asserted.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
+#include "cpu_hog.hpp"
 #include "firmware_test_support.hpp"
 #include "ringlet/firmware/stack.hpp"
 
 namespace ringlet::firmware {
 namespace {
 
-TEST(RealClock, TwoSecondsAt100HzKeepEveryTaskP99CpuInsideItsBudget) {
+// On a machine with a busy thread on every core the executive loses frames (it runs 60-65 % of
+// them) and the thread CPU time of the smallest tasks gets noisy: a cold cache, and the
+// simulator's hand-over to its render thread (inside sense) now and then costs a millisecond.
+// Measured on the 2-core development VM, 12 loaded runs while other builds loaded it as well:
+// sense p95 45-102 us, p99 80-152 us and once 1070 us (over ~70 frames p99 is the largest
+// sample). So the loaded run judges the 95th percentile against the plain budget (200 us for
+// sense: twice the worst p95 measured).
+constexpr double kLoadedQuantile = 0.95;
+
+void run_two_seconds_and_check(double quantile) {
   // The main job's stack: camera (render thread) and vision included.
   auto text = test::shipped_config_text(test::kSplConfig);
   text = test::with_line(text, "clock", "clock = \"realtime\"");
@@ -29,23 +41,30 @@ TEST(RealClock, TwoSecondsAt100HzKeepEveryTaskP99CpuInsideItsBudget) {
   EXPECT_GE(frames.frames + frames.slips, kFrames);
   EXPECT_LE(frames.frames, kFrames);
   const double slowdown = test::kCpuSlowdown;
-  std::printf("real clock, %llu frames (slowdown factor for budgets: %.0f)\n",
-              static_cast<unsigned long long>(frames.frames), slowdown);
+  std::printf("real clock, %llu frames (budgets scaled by %.1f, judged at p%g)\n",
+              static_cast<unsigned long long>(frames.frames), slowdown, quantile * 100);
   for (std::size_t i = 0; i < exec.tasks().size(); ++i) {
     const auto& spec = exec.tasks()[i].spec;
     const auto& st = exec.task_stats()[i];
     const double budget_us = hal::to_seconds(spec.budget) * 1e6 * slowdown;
-    const double cpu_p99_us = hal::to_seconds(st.cpu.percentile(0.99)) * 1e6;
-    std::printf("  %-10s runs %5llu  cpu p99 %8.1f us (budget %8.1f us)  wall p99 %8.1f us  wall max %8.1f us\n",
-                spec.name.c_str(), static_cast<unsigned long long>(st.runs), cpu_p99_us, budget_us,
-                hal::to_seconds(st.wall.percentile(0.99)) * 1e6, hal::to_seconds(st.wall.max()) * 1e6);
+    const auto cpu_us = [&st](double q) { return hal::to_seconds(st.cpu.percentile(q)) * 1e6; };
+    std::printf("  %-10s runs %5llu  cpu p50 %8.1f  p95 %8.1f  p99 %8.1f us (budget %8.1f us)  wall p99 %8.1f  max %8.1f us\n",
+                spec.name.c_str(), static_cast<unsigned long long>(st.runs), cpu_us(0.5), cpu_us(0.95), cpu_us(0.99),
+                budget_us, hal::to_seconds(st.wall.percentile(0.99)) * 1e6, hal::to_seconds(st.wall.max()) * 1e6);
     EXPECT_GT(st.runs, 0U) << spec.name;
-    EXPECT_LE(cpu_p99_us, budget_us) << spec.name << ": p99 thread CPU time over budget";
+    EXPECT_LE(cpu_us(quantile), budget_us) << spec.name << ": thread CPU time at p" << quantile * 100 << " over budget";
   }
   std::printf("  wake-up latency p99 %.1f us, max %.1f us; frame overruns %llu, slips %llu (not asserted)\n",
               hal::to_seconds(frames.wake_latency.percentile(0.99)) * 1e6,
               hal::to_seconds(frames.wake_latency.max()) * 1e6,
               static_cast<unsigned long long>(frames.frame_overruns), static_cast<unsigned long long>(frames.slips));
+}
+
+TEST(RealClock, TwoSecondsAt100HzKeepEveryTaskP99CpuInsideItsBudget) { run_two_seconds_and_check(0.99); }
+
+TEST(RealClock, TwoSecondsAt100HzOnALoadedMachine) {
+  const ringlet::test::CpuHog hog;
+  run_two_seconds_and_check(kLoadedQuantile);
 }
 
 }  // namespace

@@ -50,13 +50,19 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
   r.horizon_row = horizon_rows(k, pose, config_.horizon_margin_px, first_row_);
   lap(Stage::kHorizon);
 
+  // Work is counted from the frame's geometry and the levels, so the count (and the modelled
+  // cost) is the same whichever clock is running.
+  const std::int64_t ground_pixels =
+      static_cast<std::int64_t>(k.width) * std::max<std::int64_t>(0, k.height - r.horizon_row);
   bool classified = false;
   if (may_run(Stage::kClassify)) {
     classified = classes_.classify(frame, table_, r.horizon_row, level.class_step);
+    if (classified) r.work.classified_pixels = ground_pixels / (level.class_step * level.class_step);
     lap(Stage::kClassify);
   }
   if (classified && may_run(Stage::kBall)) {
     r.ball = ball_.detect(classes_, k, pose, level.ball_stride);
+    r.work.ball_samples = ground_pixels / (level.ball_stride * level.ball_stride);
     lap(Stage::kBall);
   }
   bool scanned = false;
@@ -66,6 +72,8 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     r.scan = scanner_.scan(classes_, frame, k, pose, first_row_, scan, candidates_);
     r.candidates = static_cast<int>(candidates_.size());
     r.candidates_dropped = static_cast<int>(candidates_.dropped());
+    r.work.scanned_pixels = 2 * ground_pixels / level.scan_stride;  // vertical and horizontal lines
+    r.work.candidates = r.candidates;
     scanned = true;
     lap(Stage::kScan);
   }
@@ -77,6 +85,7 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     r.line_count = lines.count;
     r.circle = lines.circle;
     r.ransac = lines.stats;
+    r.work.point_tests = static_cast<std::int64_t>(lines.stats.trials_run) * lines.stats.points_used;
     r.cut.trials_skipped = lines.stats.trials_skipped;
     r.cut.lines_not_extracted = lines.stats.stopped_early;
     r.cut.points_left = lines.stats.points_left;

@@ -7,22 +7,73 @@
 
 namespace ringlet::firmware {
 
-std::uint64_t trajectory_hash(std::span<const hal::Pose2> poses) noexcept {
+namespace {
+
+// FNV-1a, fed byte by byte in little-endian order whatever the host, so that x86-64 and aarch64
+// agree.
+struct Fnv1a {
   std::uint64_t h = 1469598103934665603ULL;
-  const auto mix = [&h](double v) {
-    auto bits = std::bit_cast<std::uint64_t>(v);
+  void bits(std::uint64_t v) noexcept {
     for (int i = 0; i < 8; ++i) {
-      h ^= bits & 0xffU;
+      h ^= v & 0xffU;
       h *= 1099511628211ULL;
-      bits >>= 8;
+      v >>= 8;
     }
-  };
-  for (const auto& p : poses) {
-    mix(p.x);
-    mix(p.y);
-    mix(p.theta);
   }
-  return h;
+  void real(double v) noexcept { bits(std::bit_cast<std::uint64_t>(v)); }
+  void text(std::string_view t) noexcept {
+    bits(t.size());
+    for (const char c : t) bits(static_cast<unsigned char>(c));
+  }
+};
+
+// Everything the controller decided that is not a pose: what the schedule ran, skipped and
+// degraded, what vision found, where the machines ended, what the robot hit. Host measurements
+// (wall and CPU times, measured overruns) stay out: they differ from run to run by nature.
+std::uint64_t run_hash(const FirmwareStack& stack, const MissionSummary& s) noexcept {
+  Fnv1a f;
+  f.bits(s.trajectory_hash);
+  const auto tasks = stack.executive().tasks();
+  const auto stats = stack.executive().task_stats();
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    f.text(tasks[i].spec.name);
+    f.bits(stats[i].runs);
+    f.bits(stats[i].overruns);
+    f.bits(stats[i].skipped);
+    f.bits(stats[i].degraded_runs);
+  }
+  f.bits(stack.executive().next_frame());
+  f.bits(s.failsafe ? 1U : 0U);
+  for (const auto& m : s.machines) {
+    f.text(m.name);
+    f.text(m.state);
+    f.bits(m.ringlets);
+    f.bits(m.suspended ? 1U : 0U);
+  }
+  f.bits(s.goals_reached);
+  f.bits(s.collisions);
+  f.bits(s.fsm_status_seen);
+  if (s.vision) {
+    for (const std::uint64_t v : {s.vision->frames, s.vision->with_lines, s.vision->lines, s.vision->with_ball,
+                                  s.vision->cut, s.vision->degraded, s.vision->bad_frames, s.vision->missed_frames}) {
+      f.bits(v);
+    }
+  }
+  f.bits(s.head.frames);
+  f.real(s.head.sum_error);
+  return f.h;
+}
+
+}  // namespace
+
+std::uint64_t trajectory_hash(std::span<const hal::Pose2> poses) noexcept {
+  Fnv1a f;
+  for (const auto& p : poses) {
+    f.real(p.x);
+    f.real(p.y);
+    f.real(p.theta);
+  }
+  return f.h;
 }
 
 MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, bool safe_before_shutdown) {
@@ -51,6 +102,7 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
   s.fsm_status_seen = stack.fsm_status_seen();
   s.head = stack.telemetry().head_tracking();
   if (const VisionTask* v = stack.vision()) s.vision = v->stats();
+  s.run_hash = run_hash(stack, s);
   return s;
 }
 
@@ -59,12 +111,12 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
   std::snprintf(line, sizeof line,
                 "MISSION %s — %zu/%zu goals in %.2f s (simulated on %s, %.3f s of host time)\n"
                 "  world %s, seed %llu, distance %.2f m, collisions %llu, safe state forced: %s%s%s\n"
-                "  trajectory hash %016llx\n",
+                "  trajectory hash %016llx  run hash %016llx\n",
                 s.complete ? "COMPLETE" : (s.interrupted ? "INTERRUPTED" : "INCOMPLETE"), s.goals_reached,
                 s.goal_count, s.mission_seconds, s.backend.c_str(), s.wall_seconds, s.world.c_str(),
                 static_cast<unsigned long long>(s.seed), s.distance_m, static_cast<unsigned long long>(s.collisions),
                 s.safe_state ? "yes" : "no", s.failsafe ? " (failsafe policy)" : "", s.watchdog ? " (watchdog)" : "",
-                static_cast<unsigned long long>(s.trajectory_hash));
+                static_cast<unsigned long long>(s.trajectory_hash), static_cast<unsigned long long>(s.run_hash));
   out << line;
   for (const auto& m : s.machines) {
     std::snprintf(line, sizeof line, "  machine %-12s final state %-12s ringlets %8llu%s\n", m.name.c_str(),
@@ -99,6 +151,8 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
 nlohmann::json summary_json(const MissionSummary& s) {
   char hash[20];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(s.trajectory_hash));
+  char run[20];
+  std::snprintf(run, sizeof run, "%016llx", static_cast<unsigned long long>(s.run_hash));
   nlohmann::json machines = nlohmann::json::array();
   for (const auto& m : s.machines) {
     machines.push_back({{"name", m.name}, {"state", m.state}, {"ringlets", m.ringlets}, {"suspended", m.suspended}});
@@ -124,6 +178,7 @@ nlohmann::json summary_json(const MissionSummary& s) {
           {"watchdog", s.watchdog},
           {"interrupted", s.interrupted},
           {"trajectory_hash", hash},
+          {"run_hash", run},
           {"machines", machines},
           {"fsm_status_seen", s.fsm_status_seen},
           {"vision", vision},

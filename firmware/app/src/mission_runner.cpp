@@ -15,6 +15,10 @@
 namespace ringlet::firmware {
 namespace {
 
+// A frame of the SPL field under qemu-aarch64 with a busy neighbour takes about a second of real
+// time; ten is far beyond any healthy frame and still stops a hung task.
+constexpr hal::Nanos kLockstepWatchdog = std::chrono::seconds{10};
+
 // The non-real-time side of a run: prints what the cycle reported through the event log, and a
 // progress line every few seconds. It never touches the cycle's data except through atomics.
 class Narrator {
@@ -103,10 +107,11 @@ RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomi
     std::optional<executive::WatchdogThread> watchdog;
     if (cfg.executive.watchdog_periods > 0) {
       // On the real clock a frame is due every period, so a few missed periods mean a stall. In
-      // lockstep a frame takes whatever the host needs (rendering, a sanitizer, qemu), so there
-      // the watchdog only catches a real stall: at least a second without a frame.
+      // lockstep a frame takes whatever the host needs (rendering, a sanitizer, qemu, a loaded
+      // machine), and a run must not change with the host's load, so there the watchdog only
+      // catches a hang: kLockstepWatchdog without a frame.
       auto timeout = cfg.executive.period * cfg.executive.watchdog_periods;
-      if (cfg.clock == ClockMode::kLockstep) timeout = std::max<hal::Nanos>(timeout, std::chrono::seconds{1});
+      if (cfg.clock == ClockMode::kLockstep) timeout = std::max<hal::Nanos>(timeout, kLockstepWatchdog);
       const auto poll = std::max(cfg.executive.period / 2, hal::Nanos{1'000'000});
       watchdog.emplace(watchdog_clock, exec.heartbeat(), actuators, timeout, poll, &interrupt);
     }

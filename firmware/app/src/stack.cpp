@@ -97,7 +97,11 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config)
     provided.emplace_back("vision", &*vision_task_);
   }
   auto tasks = bind_tasks(config_.tasks, provided, config_.source.string());
-  executive_ = std::make_unique<executive::Executive>(config_.executive, std::move(tasks), clock(), stopwatch_,
+  // Lockstep is a pure function of seed and configuration: there the policies act on the tasks'
+  // modelled costs, and what the host measured is reported beside them.
+  executive::ExecutiveConfig exec_config = config_.executive;
+  exec_config.judge_on_model = config_.clock == ClockMode::kLockstep;
+  executive_ = std::make_unique<executive::Executive>(exec_config, std::move(tasks), clock(), stopwatch_,
                                                       robot_->actuators(), &events_);
   whiteboard_task_.attach(*executive_);
 }

@@ -52,6 +52,7 @@ void SenseTask::run(const executive::TaskContext& /*ctx*/) noexcept {
 
 void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   hal::FrameView frame;
+  cost_ = task_costs::kVisionNoFrame;
   if (!camera_.grab_latest(frame) || (have_frame_ && frame.sequence == last_sequence_)) return;
   if (have_frame_ && frame.sequence > last_sequence_ + 1) stats_.missed_frames += frame.sequence - last_sequence_ - 1;
   have_frame_ = true;
@@ -63,6 +64,7 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   const vision::VisionResult& r =
       pipeline_.process(frame, state_.head_history.at(frame.capture_time), deadline, ctx.degrade_level);
   ++stats_.frames;
+  cost_ = task_costs::kVisionNoFrame + vision::modelled_cost(r.work);
   if (r.status != vision::VisionStatus::kOk) {
     ++stats_.bad_frames;
     return;
@@ -77,6 +79,12 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
 }
 
 void FsmTask::run(const executive::TaskContext& ctx) noexcept { schedule_.run_turn(ctx.now); }
+
+Nanos FsmTask::modelled_cost() const noexcept {
+  std::int64_t ringlets = 0;
+  for (std::size_t i = 0; i < schedule_.size(); ++i) ringlets += schedule_.ringlets_per_turn(i);
+  return task_costs::kFsmTurn + ringlets * task_costs::kFsmPerRinglet;
+}
 
 void ActuateTask::run(const executive::TaskContext& /*ctx*/) noexcept {
   const auto motion = board_.get<wb::MotionCommand>();

@@ -123,13 +123,19 @@ void Executive::run_task(std::size_t index, std::uint64_t frame, Nanos frame_sta
   const Nanos wall = stopwatch_.wall_now() - ctx.started_wall;
   const Nanos cpu = stopwatch_.cpu_now() - cpu0;
 
+  const Nanos modelled = binding.task->modelled_cost();
+
   ++s.runs;
   if (s.degrade_level > 0) ++s.degraded_runs;
   s.wall.record(wall);
   s.cpu.record(cpu);
+  s.model.record(modelled);
   const Nanos measured = config_.overrun_on_cpu_time ? cpu : wall;
-  if (measured > binding.spec.budget) {
-    on_overrun(index, frame, measured);
+  if (measured > binding.spec.budget) ++s.measured_overruns;
+  // In lockstep the host's speed must not steer the robot: the policy sees the modelled cost.
+  const Nanos judged = config_.judge_on_model ? modelled : measured;
+  if (judged > binding.spec.budget) {
+    on_overrun(index, frame, judged);
   } else {
     on_budget_met(index);
   }

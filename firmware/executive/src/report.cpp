@@ -24,6 +24,16 @@ double frame_share(const ExecutiveConfig& c, const TaskSpec& t, const TaskStats&
   return 100.0 * static_cast<double>(s.wall.mean().count()) / t.every / static_cast<double>(c.period.count());
 }
 
+// What the policies acted on, in words and as the JSON tag.
+std::string judged_on_text(const ExecutiveConfig& c) {
+  if (c.judge_on_model) return "the modelled cost (lockstep)";
+  return c.overrun_on_cpu_time ? "thread CPU time" : "wall time";
+}
+const char* judged_on_tag(const ExecutiveConfig& c) {
+  if (c.judge_on_model) return "model";
+  return c.overrun_on_cpu_time ? "cpu" : "wall";
+}
+
 nlohmann::json histogram_json(const DurationHistogram& h) {
   return {{"min_us", us(h.min())},       {"mean_us", us(h.mean())},         {"p50_us", us(h.percentile(0.50))},
           {"p99_us", us(h.percentile(0.99))}, {"p999_us", us(h.percentile(0.999))}, {"max_us", us(h.max())}};
@@ -34,8 +44,9 @@ nlohmann::json histogram_json(const DurationHistogram& h) {
 void print_timing_table(std::ostream& out, const Executive& exec) {
   const auto& c = exec.config();
   char line[256];
-  std::snprintf(line, sizeof line, "%-3s %-14s %7s %5s %8s %-8s %8s %8s %8s %8s %8s %8s %6s %6s %6s\n", "#", "TASK",
-                "RATE", "PH", "BUDGET", "POLICY", "RUNS", "MIN", "AVG", "P99", "MAX", "CPU-P99", "OVR", "SKIP", "SHARE");
+  std::snprintf(line, sizeof line, "%-3s %-14s %7s %5s %8s %-8s %8s %8s %8s %8s %8s %8s %9s %6s %8s %6s %6s\n", "#",
+                "TASK", "RATE", "PH", "BUDGET", "POLICY", "RUNS", "MIN", "AVG", "P99", "MAX", "CPU-P99", "MODEL-P99", "OVR",
+                "MEAS-OVR", "SKIP", "SHARE");
   out << line;
   const auto tasks = exec.tasks();
   const auto stats = exec.task_stats();
@@ -44,11 +55,13 @@ void print_timing_table(std::ostream& out, const Executive& exec) {
     const auto& s = stats[i];
     char rate[16];
     std::snprintf(rate, sizeof rate, "%.1fHz", rate_hz(c, t));
-    std::snprintf(line, sizeof line, "%-3zu %-14s %7s %5d %8s %-8s %8llu %8s %8s %8s %8s %8s %6llu %6llu %5.1f%%\n", i,
+    std::snprintf(line, sizeof line,
+                  "%-3zu %-14s %7s %5d %8s %-8s %8llu %8s %8s %8s %8s %8s %9s %6llu %8llu %6llu %5.1f%%\n", i,
                   t.name.c_str(), rate, t.phase, fmt_us(t.budget).c_str(), std::string(to_string(t.policy)).c_str(),
                   static_cast<unsigned long long>(s.runs), fmt_us(s.wall.min()).c_str(), fmt_us(s.wall.mean()).c_str(),
                   fmt_us(s.wall.percentile(0.99)).c_str(), fmt_us(s.wall.max()).c_str(),
-                  fmt_us(s.cpu.percentile(0.99)).c_str(), static_cast<unsigned long long>(s.overruns),
+                  fmt_us(s.cpu.percentile(0.99)).c_str(), fmt_us(s.model.percentile(0.99)).c_str(),
+                  static_cast<unsigned long long>(s.overruns), static_cast<unsigned long long>(s.measured_overruns),
                   static_cast<unsigned long long>(s.skipped), frame_share(c, t, s));
     out << line;
   }
@@ -61,8 +74,8 @@ void print_timing_table(std::ostream& out, const Executive& exec) {
                 fmt_us(f.busy.percentile(0.99)).c_str(), fmt_us(f.busy.max()).c_str(),
                 fmt_us(f.wake_latency.percentile(0.99)).c_str(), fmt_us(f.wake_latency.max()).c_str());
   out << line;
-  out << "(times in us; wall time unless marked CPU; budgets judged on "
-      << (c.overrun_on_cpu_time ? "thread CPU time" : "wall time") << ")\n";
+  out << "(times in us; wall time unless marked CPU or MODEL; budgets judged on " << judged_on_text(c)
+      << "; MEAS-OVR: activations over budget on measured " << (c.overrun_on_cpu_time ? "CPU" : "wall") << " time)\n";
 }
 
 nlohmann::json timing_json(const Executive& exec) {
@@ -82,16 +95,19 @@ nlohmann::json timing_json(const Executive& exec) {
                      {"policy", std::string(to_string(t.policy))},
                      {"runs", s.runs},
                      {"overruns", s.overruns},
+                     {"measured_overruns", s.measured_overruns},
                      {"skipped", s.skipped},
                      {"degraded_runs", s.degraded_runs},
                      {"degrade_level", s.degrade_level},
                      {"share_percent", frame_share(c, t, s)},
                      {"wall", histogram_json(s.wall)},
-                     {"cpu", histogram_json(s.cpu)}});
+                     {"cpu", histogram_json(s.cpu)},
+                     {"model", histogram_json(s.model)}});
   }
   const auto& f = exec.frame_stats();
   return {{"period_us", us(c.period)},
-          {"budgets_judged_on", c.overrun_on_cpu_time ? "cpu" : "wall"},
+          {"budgets_judged_on", judged_on_tag(c)},
+          {"measured_on", c.overrun_on_cpu_time ? "cpu" : "wall"},
           {"tasks", tasks},
           {"frames",
            {{"executed", f.frames},
@@ -109,8 +125,8 @@ std::string describe(const Event& e, const Executive& exec) {
   char buf[256];
   switch (e.kind) {
     case EventKind::kOverrun:
-      std::snprintf(buf, sizeof buf, "overrun: task '%s' took %.1f us > budget %.1f us in frame %llu (policy %s%s)%s",
-                    name(e.task).c_str(), us(e.measured), us(e.limit), static_cast<unsigned long long>(e.frame),
+      std::snprintf(buf, sizeof buf, "overrun: task '%s' %s %.1f us > budget %.1f us in frame %llu (policy %s%s)%s",
+                    name(e.task).c_str(), exec.config().judge_on_model ? "cost (modelled)" : "took", us(e.measured), us(e.limit), static_cast<unsigned long long>(e.frame),
                     std::string(to_string(exec.tasks()[e.task].spec.policy)).c_str(),
                     exec.tasks()[e.task].spec.policy == OverrunPolicy::kDegrade
                         ? (", level " + std::to_string(e.level)).c_str()

@@ -15,6 +15,7 @@
 #include "ringlet/vision/ball.hpp"
 #include "ringlet/vision/class_image.hpp"
 #include "ringlet/vision/colour_table.hpp"
+#include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/deadline.hpp"
 #include "ringlet/vision/ransac.hpp"
 #include "ringlet/vision/scan_points.hpp"
@@ -82,6 +83,7 @@ struct VisionResult {
   ScanStats scan{};
   RansacStats ransac{};
   CutStats cut{};
+  WorkCount work{};             // what the stages did, for the cost model (cost_model.hpp)
   std::array<hal::Nanos, kStageCount> stage_time{};  // by Stage; measured on the deadline's stopwatch
   hal::Nanos total_time{0};
 };

@@ -38,6 +38,8 @@ struct MissionSummary {
   bool watchdog = false;
   bool interrupted = false;
   std::uint64_t trajectory_hash = 0;  // FNV-1a over the recorded poses: equal hashes, equal runs
+  std::uint64_t run_hash = 0;         // the trajectory hash and every decision of the schedule, vision
+                                      // and the machines (no host measurements): the golden-run check
   std::vector<MachineSummary> machines;
   std::uint64_t fsm_status_seen = 0;  // FsmStatus delivered by the stack's whiteboard subscription
   HeadTracking head{};                // sim only: measured head yaw against the true ball

@@ -8,6 +8,7 @@
 #include "ringlet/behaviour/waypoint_mission.hpp"
 #include "ringlet/executive/task.hpp"
 #include "ringlet/firmware/cycle_state.hpp"
+#include "ringlet/firmware/task_costs.hpp"
 #include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/hal/robot.hpp"
 #include "ringlet/sim/sim_robot.hpp"
@@ -20,6 +21,8 @@ class Executive;
 
 namespace ringlet::firmware {
 
+using hal::Nanos;
+
 /// HAL sensors → CycleState and the whiteboard (Pose, LaserSummary). On the simulated robot this
 /// is also what advances the world and keeps the true ball for scoring; without a camera it posts
 /// that true ball as the BallBelief, marked `simulated` (with a camera, vision posts it).
@@ -29,6 +32,7 @@ class SenseTask final : public executive::Task {
             bool post_true_ball) noexcept
       : sensors_(sensors), state_(state), board_(board), truth_(truth), post_true_ball_(post_true_ball) {}
   void run(const executive::TaskContext& ctx) noexcept override;
+  [[nodiscard]] Nanos modelled_cost() const noexcept override { return task_costs::kSense; }
 
  private:
   hal::Sensors& sensors_;
@@ -65,6 +69,8 @@ class VisionTask final : public executive::Task {
              VisionDeadline deadline) noexcept
       : camera_(camera), pipeline_(pipeline), state_(state), board_(board), deadline_(deadline) {}
   void run(const executive::TaskContext& ctx) noexcept override;
+  /// vision::modelled_cost of the frame processed, or a small fixed cost when there was none.
+  [[nodiscard]] Nanos modelled_cost() const noexcept override { return cost_; }
   [[nodiscard]] const VisionStats& stats() const noexcept { return stats_; }
 
  private:
@@ -75,6 +81,7 @@ class VisionTask final : public executive::Task {
   VisionDeadline deadline_;
   bool have_frame_ = false;
   std::uint64_t last_sequence_ = 0;
+  Nanos cost_{0};
   VisionStats stats_{};
 };
 
@@ -83,6 +90,7 @@ class FsmTask final : public executive::Task {
  public:
   explicit FsmTask(behaviour::llfsm::Schedule& schedule) noexcept : schedule_(schedule) {}
   void run(const executive::TaskContext& ctx) noexcept override;
+  [[nodiscard]] Nanos modelled_cost() const noexcept override;
 
  private:
   behaviour::llfsm::Schedule& schedule_;
@@ -94,6 +102,7 @@ class ActuateTask final : public executive::Task {
   ActuateTask(hal::Actuators& actuators, const wb::Whiteboard& board) noexcept
       : actuators_(actuators), board_(board) {}
   void run(const executive::TaskContext& ctx) noexcept override;
+  [[nodiscard]] Nanos modelled_cost() const noexcept override { return task_costs::kActuate; }
 
  private:
   hal::Actuators& actuators_;
@@ -112,6 +121,7 @@ class TelemetryTask final : public executive::Task {
         state_(state),
         every_(static_cast<std::uint64_t>(every_frames)) {}
   void run(const executive::TaskContext& ctx) noexcept override;
+  [[nodiscard]] Nanos modelled_cost() const noexcept override { return task_costs::kTelemetry; }
 
  private:
   Telemetry& telemetry_;
@@ -130,6 +140,7 @@ class WhiteboardTask final : public executive::Task {
   /// The executive is built after its tasks; the stack attaches it before the first frame.
   void attach(const executive::Executive& executive) noexcept { executive_ = &executive; }
   void run(const executive::TaskContext& ctx) noexcept override;
+  [[nodiscard]] Nanos modelled_cost() const noexcept override { return task_costs::kWhiteboard; }
 
  private:
   wb::Whiteboard& board_;

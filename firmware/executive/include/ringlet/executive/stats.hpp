@@ -8,7 +8,8 @@ namespace ringlet::executive {
 
 struct TaskStats {
   std::uint64_t runs = 0;
-  std::uint64_t overruns = 0;          // activations over budget
+  std::uint64_t overruns = 0;          // activations over budget, as judged (the policy acted on these)
+  std::uint64_t measured_overruns = 0; // activations whose measured time was over budget (wall or CPU)
   std::uint64_t skipped = 0;           // activations not run: skip policy or frames lost to a slip
   std::uint64_t degraded_runs = 0;     // activations that ran with degrade_level > 0
   int degrade_level = 0;
@@ -19,6 +20,7 @@ struct TaskStats {
   std::uint64_t suppressed_warnings = 0;
   DurationHistogram wall;              // wall time per activation
   DurationHistogram cpu;               // thread CPU time per activation
+  DurationHistogram model;             // modelled cost per activation (Task::modelled_cost())
 };
 
 struct FrameStats {

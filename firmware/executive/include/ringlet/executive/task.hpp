@@ -35,6 +35,14 @@ class Task {
  public:
   virtual ~Task() = default;
   virtual void run(const TaskContext& ctx) noexcept = 0;
+
+  /// What the activation that just ran costs on the target board, computed from the work the
+  /// task counted (pixels classified, RANSAC trials, ringlets) and never from a clock. In
+  /// lockstep the overrun policies act on this figure (ExecutiveConfig::judge_on_model), so that
+  /// what the controller does is a pure function of seed and configuration. A task whose work
+  /// does not vary returns its nominal cost; the default, zero, is for tasks that are never judged
+  /// on a model (tests on scripted clocks).
+  [[nodiscard]] virtual Nanos modelled_cost() const noexcept { return Nanos{0}; }
 };
 
 }  // namespace ringlet::executive

@@ -45,7 +45,11 @@ struct ExecutiveConfig {
   int warn_every_frames = 100;     // at most one overrun warning per task per this many frames
   int degrade_max_level = 3;
   int degrade_recover_after = 20;  // on-budget activations before the degrade level drops by one
-  bool overrun_on_cpu_time = false;  // judge budgets by thread CPU time instead of wall time
+  bool overrun_on_cpu_time = false;  // measure budgets on thread CPU time instead of wall time
+  // Lockstep: the overrun policies act on each task's modelled cost (Task::modelled_cost(), a pure
+  // function of the work it did), so that a simulated run is the same whatever the host's load.
+  // The measured time is still recorded and its overruns counted beside (TaskStats::measured_overruns).
+  bool judge_on_model = false;
 };
 
 /// Longest hyperperiod (in frames) the overload check will walk; beyond it the table is refused.

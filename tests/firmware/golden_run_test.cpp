@@ -1,0 +1,106 @@
+// Golden runs: the shipped configurations in lockstep, compared against hashes committed here.
+// The same hashes must come out natively on x86-64, under qemu-aarch64 and under the sanitizers,
+// and with the machine loaded by busy threads: a simulated run is a pure function of seed and
+// configuration (the policies act on modelled costs; see README "Determinism").
+//
+// When a change alters what the robot does on purpose, run `ringlet --config ... [--duration S]`
+// and update the hashes below from its summary line ("trajectory hash ... run hash ...").
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdio>
+#include <sstream>
+
+#include "cpu_hog.hpp"
+#include "firmware_test_support.hpp"
+#include "ringlet/firmware/mission_report.hpp"
+#include "ringlet/firmware/mission_runner.hpp"
+#include "ringlet/firmware/stack.hpp"
+
+namespace ringlet::firmware {
+namespace {
+
+using test::with_line;
+
+struct Golden {
+  const char* name;
+  std::uint64_t trajectory;
+  std::uint64_t run;
+};
+
+MissionSummary run(const std::string& text, const char* name) {
+  const auto cfg = test::parse_as_shipped(text);
+  FirmwareStack stack(cfg);
+  std::atomic<bool> interrupt{false};
+  std::ostringstream log;
+  const auto outcome = run_mission(stack, cfg.timeout_s, interrupt, log);
+  auto s = summarize(stack, outcome, stack.executive().failsafe_triggered() || outcome.watchdog_fired);
+  std::printf("%s: trajectory hash %016llx  run hash %016llx  (%.2f s simulated, %.2f s host)\n", name, static_cast<unsigned long long>(s.trajectory_hash),
+              static_cast<unsigned long long>(s.run_hash), s.mission_seconds, s.wall_seconds);
+  return s;
+}
+
+void expect_golden(const MissionSummary& s, const Golden& g) {
+  char want[64];
+  char got[64];
+  std::snprintf(want, sizeof want, "%016llx/%016llx", static_cast<unsigned long long>(g.trajectory),
+                static_cast<unsigned long long>(g.run));
+  std::snprintf(got, sizeof got, "%016llx/%016llx", static_cast<unsigned long long>(s.trajectory_hash),
+                static_cast<unsigned long long>(s.run_hash));
+  EXPECT_STREQ(got, want) << g.name << ": trajectory/run hash differ from the committed golden run";
+}
+
+std::string courtyard() { return test::shipped_config_text(); }
+
+// The main job's configuration, shortened (rendering dominates the cost of a run).
+std::string spl_field(double seconds) {
+  return with_line(test::shipped_config_text(test::kSplConfig), "timeout_s",
+                   "timeout_s = " + std::to_string(seconds));
+}
+
+// The SPL field with budgets the modelled costs exceed now and then, so that the degrade and
+// skip policies act during the run: what they do must be the same on every host too.
+std::string spl_field_policies_acting(double seconds) {
+  auto text = with_line(spl_field(seconds), "  { name = \"vision\"",
+                        "  { name = \"vision\", every = 3, phase = 0, budget_us = 1500, policy = \"degrade\" },");
+  return with_line(text, "  { name = \"telemetry\"",
+                   "  { name = \"telemetry\", every = 1, phase = 0, budget_us = 3, policy = \"skip\" },");
+}
+
+constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0xb66542de2f7d669cULL, 0x76290d491ee3000bULL};
+constexpr Golden kSplField{"spl_field.toml (8 s)", 0xf7f8090332d96d00ULL, 0xb64f5b6b0e0a07afULL};
+constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x5620a62c0b652a82ULL, 0x7fc51303867b5a59ULL};
+
+TEST(GoldenRun, CourtyardMission) {
+  const auto s = run(courtyard(), kCourtyard.name);
+  EXPECT_TRUE(s.complete);
+  expect_golden(s, kCourtyard);
+}
+
+TEST(GoldenRun, SplFieldWithCameraAndVision) {
+  const auto s = run(spl_field(8.0), kSplField.name);
+  ASSERT_TRUE(s.vision.has_value());
+  EXPECT_GT(s.vision->frames, 250U);
+  expect_golden(s, kSplField);
+}
+
+TEST(GoldenRun, SplFieldWithTheDegradeAndSkipPoliciesActing) {
+  const auto s = run(spl_field_policies_acting(4.0), kSplPolicies.name);
+  ASSERT_TRUE(s.vision.has_value());
+  EXPECT_GT(s.vision->degraded, 0U) << "the tight vision budget must make the degrade policy act";
+  expect_golden(s, kSplPolicies);
+}
+
+// The same runs with every core busy: nothing measured on the host may change them.
+TEST(GoldenRun, CourtyardMissionUnderLoad) {
+  const ringlet::test::CpuHog hog;
+  expect_golden(run(courtyard(), kCourtyard.name), kCourtyard);
+}
+
+TEST(GoldenRun, PoliciesActingUnderLoad) {
+  const ringlet::test::CpuHog hog;
+  expect_golden(run(spl_field_policies_acting(4.0), kSplPolicies.name), kSplPolicies);
+}
+
+}  // namespace
+}  // namespace ringlet::firmware

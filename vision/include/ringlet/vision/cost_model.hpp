@@ -1,0 +1,42 @@
+#pragma once
+// What one frame of vision costs on the target board, from the work the pipeline counted: a pure
+// function of the frame, the head posture and the degrade level, never of a clock. The executive
+// judges the vision task's budget on this figure in lockstep, so a simulated run degrades (or
+// not) the same way on every host and under any load; on the real clock it judges measured time.
+//
+// The coefficients are the development host's measured CPU time per unit of work (stage
+// benchmarks of ringlet_bench_vision, see cost_model.cpp) times board_slowdown, the assumed ratio
+// of a NAO-class ARM core to that host. They are a model: the timing table prints it beside the
+// measured time (MODEL-P99 against CPU-P99) and BM_Pipeline beside the benchmark's, so a drift shows.
+#include <cstdint>
+
+#include "ringlet/hal/time.hpp"
+
+namespace ringlet::vision {
+
+/// The work one process() call did, counted as it went.
+struct WorkCount {
+  std::int64_t classified_pixels = 0;  // pixels given a colour class
+  std::int64_t ball_samples = 0;       // class-image samples the ball detector looked at
+  std::int64_t scanned_pixels = 0;     // pixels walked by the scan lines (vertical + horizontal)
+  std::int64_t candidates = 0;         // scan points offered to RANSAC
+  std::int64_t point_tests = 0;        // RANSAC trials × points each trial tested
+};
+
+struct CostModel {
+  double board_slowdown = 4.0;      // NAO-class ARM core / this host (assumed; recalibrate on the board)
+  double fixed_ns = 0.0;            // per frame: horizon, bookkeeping, posting
+  double per_classified_pixel_ns = 0.0;
+  double per_ball_sample_ns = 0.0;
+  double per_scanned_pixel_ns = 0.0;
+  double per_candidate_ns = 0.0;
+  double per_point_test_ns = 0.0;
+};
+
+/// The shipped model (coefficients measured on the development host).
+[[nodiscard]] CostModel default_cost_model() noexcept;
+
+/// Modelled board time for `work`, in whole nanoseconds.
+[[nodiscard]] hal::Nanos modelled_cost(const WorkCount& work, const CostModel& model = default_cost_model()) noexcept;
+
+}  // namespace ringlet::vision

@@ -1,0 +1,34 @@
+#include "ringlet/vision/cost_model.hpp"
+
+#include <cmath>
+
+namespace ringlet::vision {
+
+CostModel default_cost_model() noexcept {
+  // Per unit of work on the development host (2-core x86-64 VM, -O2), from ringlet_bench_vision's
+  // stage benchmarks (CPU time) on the synthetic 640x480 field frame: classification 184 us for
+  // 291k pixels below the horizon, scan lines 145 us for 145k walked pixels (stride 4), the ball
+  // 51 us for 18k samples, RANSAC 89 us for 90 trials over 78 sampled points of 779 candidates.
+  // BM_Pipeline prints model_host_us beside the measured time, so a drift shows in every bench run.
+  CostModel m;
+  m.fixed_ns = 10'000.0;
+  m.per_classified_pixel_ns = 0.63;
+  m.per_ball_sample_ns = 2.8;
+  m.per_scanned_pixel_ns = 0.95;
+  m.per_candidate_ns = 25.0;
+  m.per_point_test_ns = 10.0;
+  return m;
+}
+
+hal::Nanos modelled_cost(const WorkCount& work, const CostModel& model) noexcept {
+  // Integer work times double coefficients: the same IEEE operations in the same order on every
+  // target (the build has -ffp-contract=off), so the same frame gets the same cost everywhere.
+  const double host_ns = model.fixed_ns + model.per_classified_pixel_ns * static_cast<double>(work.classified_pixels) +
+                         model.per_ball_sample_ns * static_cast<double>(work.ball_samples) +
+                         model.per_scanned_pixel_ns * static_cast<double>(work.scanned_pixels) +
+                         model.per_candidate_ns * static_cast<double>(work.candidates) +
+                         model.per_point_test_ns * static_cast<double>(work.point_tests);
+  return hal::Nanos{static_cast<std::int64_t>(std::llround(host_ns * model.board_slowdown))};
+}
+
+}  // namespace ringlet::vision
