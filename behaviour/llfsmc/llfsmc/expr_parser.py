@@ -10,7 +10,10 @@ from .lexer import Token
 from .names import CXX_KEYWORDS, identifier_problem
 from . import syntax as S
 
-MAX_DEPTH = 64
+BINARY_PRECEDENCE = {op: level for level, ops in enumerate(S.BINARY_LEVELS) for op in ops}
+
+MAX_DEPTH = 64  # nested sub-expressions (parentheses, unary operators...): bounds the recursion
+MAX_TREE_DEPTH = 128  # bounds the recursion of everything that walks a tree (printing, checks)
 SIDE_EFFECT_OPS = {"=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>=", "++", "--"}
 SIDE_EFFECT_WORDS = {"new", "delete", "throw", "co_await", "co_yield", "co_return"}
 WORD_OPS = {"and": "&&", "or": "||", "not": "!", "bitand": "&", "bitor": "|", "xor": "^", "compl": "~"}
@@ -97,6 +100,8 @@ class Parser:
         self.end = end
         self.what = what
         self.depth = 0
+        self.depths = {}  # id(node) -> depth of its tree
+        self.keep = []  # the nodes in `depths` (so that their ids stay theirs)
 
     # -- token helpers --
     def peek(self, ahead=0):
@@ -165,7 +170,7 @@ class Parser:
             then = self.expression()
             self.expect_op(":", "in a conditional expression 'c ? a : b'")
             otherwise = self.expression()
-            cond = S.Conditional((cond.pos), cond, then, otherwise)
+            cond = self.make(S.Conditional(cond.pos, cond, then, otherwise), t)
         self.depth -= 1
         return cond
 
@@ -175,21 +180,33 @@ class Parser:
             return None
         if t.kind == "op":
             return t.text
-        if t.kind == "ident" and t.text in WORD_OPS and WORD_OPS[t.text] != "!" and WORD_OPS[t.text] != "~":
+        if t.kind == "ident" and t.text in WORD_OPS and WORD_OPS[t.text] not in ("!", "~"):
             return WORD_OPS[t.text]
         return None
 
-    def binary(self, level):
-        if level == len(S.BINARY_LEVELS):
-            return self.unary()
-        left = self.binary(level + 1)
+    def binary(self, min_level):
+        """Precedence climbing over syntax.BINARY_LEVELS (all left-associative)."""
+        left = self.unary()
         while True:
             op = self.binary_op()
-            if op not in S.BINARY_LEVELS[level]:
+            level = BINARY_PRECEDENCE.get(op)
+            if level is None or level < min_level:
                 return left
-            self.k += 1
+            tok = self.take()
+            self.nest(tok)
             right = self.binary(level + 1)
-            left = S.Binary(left.pos, op, left, right)
+            self.depth -= 1
+            left = self.make(S.Binary(left.pos, op, left, right), tok)
+
+    def make(self, node, tok):
+        """Records the depth of a new tree node; refuses trees too deep to walk recursively (a long
+        chain `a + a + ... + a` is deep without nesting)."""
+        depth = 1 + max((self.depths.get(id(c), 1) for c in S.children(node)), default=0)
+        if depth > MAX_TREE_DEPTH:
+            self.fail(tok, f"{self.what} is too long (its syntax tree is more than {MAX_TREE_DEPTH} levels deep)")
+        self.depths[id(node)] = depth
+        self.keep.append(node)
+        return node
 
     def unary(self):
         t = self.peek()
@@ -210,7 +227,7 @@ class Parser:
         self.nest(t)
         operand = self.unary()
         self.depth -= 1
-        return S.Unary((t.line, t.col), op, operand)
+        return self.make(S.Unary((t.line, t.col), op, operand), t)
 
     def postfix(self):
         node = self.primary()
@@ -223,12 +240,12 @@ class Parser:
                 f = self.take()
                 if f.kind != "ident" or f.text in CXX_KEYWORDS:
                     self.fail(f, "expected a field name after '.'")
-                node = S.Member(node.pos, node, f.text)
+                node = self.make(S.Member(node.pos, node, f.text), f)
             elif t.is_op("["):
                 self.k += 1
                 index = self.expression()
                 self.expect_op("]", "closing the '['")
-                node = S.Index(node.pos, node, index)
+                node = self.make(S.Index(node.pos, node, index), t)
             elif t.is_op("("):
                 if isinstance(node, S.Name) and len(node.parts) == 1 and not node.rooted and node.parts[0] in GUARD_CALLS:
                     if self.what != "guard":
@@ -255,7 +272,7 @@ class Parser:
         self.expect_op(")", f"closing the arguments of {name.parts[0]}()")
         if len(args) != 1:
             raise SourceError(*name.pos, f"{name.parts[0]}() takes one argument, not {len(args)}")
-        return S.Call(name.pos, name.parts[0], tuple(args))
+        return self.make(S.Call(name.pos, name.parts[0], tuple(args)), self.toks[self.k - 1])
 
     def primary(self):
         t = self.take()
@@ -266,11 +283,9 @@ class Parser:
         if t.kind in ("string", "char"):
             self.fail(t, f"string and character literals are not supported in a {self.what}")
         if t.is_op("("):
-            self.nest(t)
             inner = self.expression()
             self.expect_op(")", "closing the '('")
-            self.depth -= 1
-            return S.Paren(pos, inner)
+            return self.make(S.Paren(pos, inner), t)
         if t.is_op("["):
             self.fail(t, f"lambdas are not allowed in a {self.what}")
         if t.is_op("{"):
@@ -300,7 +315,7 @@ class Parser:
         operand = self.expression()
         self.depth -= 1
         self.expect_op(")", "closing static_cast<...>(")
-        return S.Cast((t.line, t.col), ty, operand)
+        return self.make(S.Cast((t.line, t.col), ty, operand), t)
 
     def qualified_name(self):
         """['::'] ident ('::' ident)*, every part an identifier that is not a keyword."""
@@ -421,7 +436,7 @@ def parse_initial_value(tokens, end):
             elif not (nxt is not None and nxt.is_op("}")):
                 p.fail(nxt, "expected ',' or '}' in the brace list")
         p.k += 1
-        return p.finish(S.BraceList((first.line, first.col), tuple(items)))
+        return p.finish(p.make(S.BraceList((first.line, first.col), tuple(items)), first))
     return p.finish(p.expression())
 
 
