@@ -19,7 +19,7 @@ CXX_SPECIAL = frozenset({"final", "override", "import", "module"})
 RUNTIME_RESERVED = frozenset({
     "after", "after_ms", "now", "name", "state_time", "ringlets", "suspended", "request",
     "suspend_machine", "resume_machine", "restart_machine", "current_state", "current_state_name",
-    "state_count", "state_name", "wb_", "s", "std", "ringlet",
+    "state_count", "state_name", "wb_", "wb", "s", "std", "ringlet",
 })
 
 # FsmStatus and FsmControl carry machine and state names in FixedString<32>.
