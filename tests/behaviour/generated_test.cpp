@@ -11,6 +11,7 @@
 #include "ringlet/test_machines/child.hpp"
 #include "ringlet/test_machines/counter.hpp"
 #include "ringlet/test_machines/echo.hpp"
+#include "ringlet/test_machines/lexical.hpp"
 #include "ringlet/test_machines/parent.hpp"
 #include "ringlet/test_machines/timer.hpp"
 #include "test_hooks.hpp"
@@ -22,6 +23,7 @@ using namespace std::chrono_literals;
 using models::Child;
 using models::Counter;
 using models::Echo;
+using models::Lexical;
 using models::Parent;
 using models::Timer;
 
@@ -31,6 +33,8 @@ static_assert(Echo::kProvides.size() == 1 && Echo::kProvides[0] == "HeadCommand"
 static_assert(Counter::kRequires.empty() && Counter::kProvides[0] == "Pose");
 static_assert(Timer::kRequires.empty() && Timer::kProvides.empty());
 static_assert(Echo::kStates[Echo::kStateIdle] == "Idle");
+// Braces and quotes inside literals and comments of lexical.machine are text: both states remain.
+static_assert(Lexical::kStates.size() == 2 && Lexical::kStates[Lexical::kStateDone] == "Done");
 
 wb::Pose pose_x(double x) {
   wb::Pose p{};
@@ -211,6 +215,28 @@ TEST_F(GeneratedTest, ProviderCheckNamesMachineAndType) {
   with_counter.add(echo2);
   with_counter.add(counter);
   EXPECT_TRUE(check_providers(with_counter).ok());
+}
+
+// lexical.machine: the literals' braces counted at run time (the code block was not cut short),
+// the guards with digit separators, a conditional and casts fire as written, in order.
+TEST_F(GeneratedTest, LiteralsAndCommentsDoNotChangeTheStructure) {
+  Schedule sched(clock);
+  Lexical lexical(board);
+  sched.add(lexical);
+  board.post(pose_x(0.0));
+  sched.run_turn(0ns);
+  EXPECT_EQ(lexical.local_braces(), 2);
+  EXPECT_EQ(board.get<wb::HeadCommand>().yaw, 2000.0);
+  EXPECT_EQ(lexical.current_state(), Lexical::kStateScan);
+  board.post(pose_x(1500.0));
+  sched.run_turn(1ms);
+  EXPECT_EQ(lexical.current_state(), Lexical::kStateDone);
+  board.post(pose_x(-2000.0));
+  sched.run_turn(1000ms);  // Done's first ringlet: its state time starts here
+  sched.run_turn(2400ms);
+  EXPECT_EQ(lexical.current_state(), Lexical::kStateDone);  // after(1'500ms) not yet
+  sched.run_turn(2600ms);
+  EXPECT_EQ(lexical.current_state(), Lexical::kStateScan);
 }
 
 }  // namespace
