@@ -42,12 +42,18 @@ extern "C" void on_signal(int signo) {
 }
 
 // Installed before anything else happens, so that a signal during start-up also ends in an
-// orderly way (the run then stops before its first frame) instead of killing the process.
+// orderly way (the run then stops before its first frame) instead of killing the process. A signal
+// that was already ignored when ringlet started stays ignored, as the convention asks: `nohup`
+// ignores SIGHUP, a shell without job control ignores SIGINT and SIGQUIT for background jobs.
 void install_signal_handlers() {
   struct sigaction sa {};
   sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
-  for (const int signo : ringlet::firmware::kStopSignals) sigaction(signo, &sa, nullptr);
+  for (const int signo : ringlet::firmware::kStopSignals) {
+    struct sigaction inherited {};
+    if (sigaction(signo, nullptr, &inherited) == 0 && inherited.sa_handler == SIG_IGN) continue;
+    sigaction(signo, &sa, nullptr);
+  }
   // A closed pipe on stdout (`ringlet | head`) must not kill the controller mid-run: writes then
   // fail quietly instead.
   std::signal(SIGPIPE, SIG_IGN);

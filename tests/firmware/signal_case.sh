@@ -15,6 +15,9 @@ fail() {
 }
 
 rm -rf "$work" && mkdir -p "$work" || exit 1
+# Job control: without it bash starts background jobs with SIGINT and SIGQUIT ignored, and ringlet
+# keeps a signal ignored that was ignored when it started (the nohup convention).
+set -m
 # Long enough never to end by itself (the robot stands before a wall); the signal ends it.
 "${emulator[@]}" "$bin" --config "$config" --duration 86400 --report "$work/report.json" --svg "$work/run.svg" \
   >"$work/stdout" 2>"$work/stderr" &
