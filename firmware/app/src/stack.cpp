@@ -89,7 +89,7 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config)
                                                                   {"whiteboard", &whiteboard_task_}};
   if (config_.camera.enabled) {
     if (owned_camera_) camera_ = owned_camera_.get();
-    if (camera_ == nullptr) throw ConfigError(config_.positions.at("camera.enabled") + ": camera: the backend has no camera");
+    if (camera_ == nullptr) throw ConfigError(config_.positions.at("camera.enabled") + ": camera.enabled: the backend has no camera");
     pipeline_ = make_vision(config_);
     const VisionDeadline deadline = config_.clock == ClockMode::kLockstep ? VisionDeadline::kNone
                                     : config_.executive.overrun_on_cpu_time ? VisionDeadline::kCpu
