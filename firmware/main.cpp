@@ -88,15 +88,16 @@ int main(int argc, char** argv) {
   std::optional<std::filesystem::path> report_path;
   std::optional<std::filesystem::path> svg_path;
   bool check_only = false;
-  app.add_option("-c,--config", config_path, "configuration file (TOML)")->capture_default_str();
+  app.add_option("-c,--config", config_path, "configuration file (TOML)")->capture_default_str()->type_name("FILE");
   app.add_option("-d,--duration", duration_text,
                  "run at most this many seconds of schedule time, 0 < S <= " +
-                     std::to_string(static_cast<long>(firmware::kMaxRunSeconds)) + " (default: mission.timeout_s)");
+                     std::to_string(static_cast<long>(firmware::kMaxRunSeconds)) + " (default: mission.timeout_s)")
+      ->type_name("S");
   auto* rt = app.add_flag("--realtime", realtime, "pace the cycle by the real clock (clock_nanosleep)");
   app.add_flag("--lockstep", lockstep, "run on the virtual clock as fast as possible (simulation)")->excludes(rt);
-  app.add_option("--seed", seed_text, "override sim.seed (0 to 2^64-1)");
-  app.add_option("-r,--report", report_path, "write the mission summary and timing report as JSON");
-  app.add_option("--svg", svg_path, "write a picture of the world and the trajectory (sim backend)");
+  app.add_option("--seed", seed_text, "override sim.seed (0 to 2^64-1)")->type_name("N");
+  app.add_option("-r,--report", report_path, "write the mission summary and timing report as JSON")->type_name("FILE");
+  app.add_option("--svg", svg_path, "write a picture of the world and the trajectory (sim backend)")->type_name("FILE");
   app.add_flag("--check", check_only, "validate the configuration and world, print the task table, and exit");
   try {
     app.parse(argc, argv);
