@@ -1,20 +1,25 @@
 // ringlet: the one firmware binary, for the simulated and (later) the real robot.
 //   ringlet --config firmware/config/spl_field.toml --report out/report.json --svg out/spl_field.svg
-// Exit codes: 0 mission complete, 2 bad input (flags, config, world), 3 mission incomplete,
-// 4 safe state forced (failsafe/watchdog), 130 interrupted (SIGINT/SIGTERM), 1 internal error.
+// Exit codes: 0 mission complete, 1 internal or output error, 2 bad input (flags, config, world,
+// output paths), 3 mission incomplete, 4 safe state forced (failsafe/watchdog), 128 + N ended by
+// signal N (SIGINT 130, SIGTERM 143, SIGHUP 129, SIGQUIT 131) after the safe state and the report.
+#include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "ringlet/executive/report.hpp"
+#include "ringlet/firmware/command_line.hpp"
 #include "ringlet/firmware/config.hpp"
 #include "ringlet/firmware/mission_report.hpp"
 #include "ringlet/firmware/mission_runner.hpp"
+#include "ringlet/firmware/output_file.hpp"
 #include "ringlet/firmware/schedule_report.hpp"
 #include "ringlet/firmware/stack.hpp"
 #include "ringlet/sim/world.hpp"
@@ -22,21 +27,39 @@
 namespace {
 
 std::atomic<bool> g_interrupt{false};
-std::atomic<bool>* g_executive_stop = nullptr;
+std::atomic<int> g_signal{0};  // the first stop signal received
+std::atomic<std::atomic<bool>*> g_executive_stop{nullptr};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free &&
+              std::atomic<std::atomic<bool>*>::is_always_lock_free);
 
-extern "C" void on_signal(int /*signo*/) {
-  // Only lock-free atomic stores: async-signal-safe.
+extern "C" void on_signal(int signo) {
+  // Only lock-free atomics: async-signal-safe. The watchdog thread sees g_interrupt and commands
+  // the safe state at once; the cycle sees the executive's stop flag after the current frame.
+  int none = 0;
+  (void)g_signal.compare_exchange_strong(none, signo);
   g_interrupt.store(true);
-  if (g_executive_stop != nullptr) g_executive_stop->store(true);
+  if (std::atomic<bool>* stop = g_executive_stop.load()) stop->store(true);
 }
 
+// Installed before anything else happens, so that a signal during start-up also ends in an
+// orderly way (the run then stops before its first frame) instead of killing the process. A signal
+// that was already ignored when ringlet started stays ignored, as the convention asks: `nohup`
+// ignores SIGHUP, a shell without job control ignores SIGINT and SIGQUIT for background jobs.
 void install_signal_handlers() {
-  struct sigaction sa{};
+  struct sigaction sa {};
   sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
+  for (const int signo : ringlet::firmware::kStopSignals) {
+    struct sigaction inherited {};
+    if (sigaction(signo, nullptr, &inherited) == 0 && inherited.sa_handler == SIG_IGN) continue;
+    sigaction(signo, &sa, nullptr);
+  }
+  // A closed pipe on stdout (`ringlet | head`) must not kill the controller mid-run: writes then
+  // fail quietly instead.
+  std::signal(SIGPIPE, SIG_IGN);
 }
+
+int signal_exit_code() { return 128 + g_signal.load(); }
 
 void print_table(const ringlet::firmware::FirmwareConfig& cfg) {
   const double base_hz = 1e9 / static_cast<double>(cfg.executive.period.count());
@@ -51,34 +74,30 @@ void print_table(const ringlet::firmware::FirmwareConfig& cfg) {
   }
 }
 
-void write_json(const std::filesystem::path& path, const nlohmann::json& j) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::ofstream out(path);
-  out << j.dump(2) << '\n';
-  if (!out) throw std::runtime_error(path.string() + ": cannot write report");
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace ringlet;
+  install_signal_handlers();
   CLI::App app{"Ringlet firmware: the cyclic executive driving the simulated (or real) robot"};
   std::filesystem::path config_path = "firmware/config/spl_field.toml";
-  std::optional<double> duration;
+  std::optional<std::string> duration_text;
   bool realtime = false;
   bool lockstep = false;
-  std::optional<std::uint64_t> seed;
-  std::filesystem::path report_path;
-  std::filesystem::path svg_path;
+  std::optional<std::string> seed_text;
+  std::optional<std::filesystem::path> report_path;
+  std::optional<std::filesystem::path> svg_path;
   bool check_only = false;
-  app.add_option("-c,--config", config_path, "configuration file (TOML)")->capture_default_str();
-  app.add_option("-d,--duration", duration, "run at most this many seconds (default: mission.timeout_s)")
-      ->check(CLI::PositiveNumber);
+  app.add_option("-c,--config", config_path, "configuration file (TOML)")->capture_default_str()->type_name("FILE");
+  app.add_option("-d,--duration", duration_text,
+                 "run at most this many seconds of schedule time, 0 < S <= " +
+                     std::to_string(static_cast<long>(firmware::kMaxRunSeconds)) + " (default: mission.timeout_s)")
+      ->type_name("S");
   auto* rt = app.add_flag("--realtime", realtime, "pace the cycle by the real clock (clock_nanosleep)");
   app.add_flag("--lockstep", lockstep, "run on the virtual clock as fast as possible (simulation)")->excludes(rt);
-  app.add_option("--seed", seed, "override sim.seed");
-  app.add_option("-r,--report", report_path, "write the mission summary and timing report as JSON");
-  app.add_option("--svg", svg_path, "write a picture of the world and the trajectory (sim backend)");
+  app.add_option("--seed", seed_text, "override sim.seed (0 to 2^64-1)")->type_name("N");
+  app.add_option("-r,--report", report_path, "write the mission summary and timing report as JSON")->type_name("FILE");
+  app.add_option("--svg", svg_path, "write a picture of the world and the trajectory (sim backend)")->type_name("FILE");
   app.add_flag("--check", check_only, "validate the configuration and world, print the task table, and exit");
   try {
     app.parse(argc, argv);
@@ -87,23 +106,50 @@ int main(int argc, char** argv) {
   }
 
   try {
+    // Flags first: a typo costs nothing, not even reading the configuration.
+    // 0: not given (parse_duration never returns it). A plain double: GCC 12 misjudges an
+    // optional<double> here as maybe-uninitialized.
+    const double duration = duration_text ? firmware::parse_duration(*duration_text) : 0.0;
+    const std::optional<std::uint64_t> seed =
+        seed_text ? std::optional<std::uint64_t>(firmware::parse_seed(*seed_text)) : std::nullopt;
+    if (config_path.empty()) throw firmware::UsageError("--config: needs a file name");
+    if (report_path && svg_path && *report_path == *svg_path) {
+      throw firmware::UsageError("--report and --svg name the same file: " + report_path->string());
+    }
+
     auto cfg = firmware::load_config(config_path);
     if (realtime) cfg.clock = firmware::ClockMode::kRealtime;
     if (lockstep) cfg.clock = firmware::ClockMode::kLockstep;
     if (seed) cfg.sim.seed = *seed;
-    if (duration) cfg.timeout_s = *duration;
+    if (duration > 0.0) {
+      // The recording buffers are sized for the whole run at start-up: refuse what would not fit.
+      if (const std::string why = firmware::run_length_problem(cfg, duration); !why.empty()) {
+        throw firmware::UsageError("--duration: " + why);
+      }
+      cfg.timeout_s = duration;
+    }
 
     firmware::FirmwareStack stack(cfg);
     print_table(cfg);
     if (check_only) {
       std::printf("configuration OK: %s, world %s\n", config_path.c_str(), cfg.world.c_str());
-      return 0;
+      return g_interrupt.load() ? signal_exit_code() : 0;
     }
 
-    g_executive_stop = &stack.executive().stop_flag();
-    install_signal_handlers();
-    const auto outcome = firmware::run_mission(stack, cfg.timeout_s, g_interrupt, std::cerr);
-    g_executive_stop = nullptr;
+    // Claimed before the run: a path that cannot be written fails now, not after the run.
+    std::optional<firmware::PendingOutput> report;
+    std::optional<firmware::PendingOutput> svg;
+    if (report_path) report.emplace(*report_path, "--report", "the report");
+    if (svg_path) svg.emplace(*svg_path, "--svg", "the picture");
+
+    g_executive_stop.store(&stack.executive().stop_flag());
+    if (g_interrupt.load()) stack.executive().request_stop();  // a signal arrived during start-up
+    const auto outcome = [&] {
+      auto o = firmware::run_mission(stack, cfg.timeout_s, g_interrupt, std::cerr);
+      o.signal = g_signal.load();
+      return o;
+    }();
+    g_executive_stop.store(nullptr);
 
     const bool forced = stack.executive().failsafe_triggered() || outcome.watchdog_fired;
     const auto summary = firmware::summarize(stack, outcome, forced);
@@ -113,21 +159,40 @@ int main(int argc, char** argv) {
     executive::print_timing_table(std::cout, stack.executive());
     std::cout << '\n';
     firmware::print_schedule_timing(std::cout, stack.schedule());
-    if (!report_path.empty()) {
-      write_json(report_path, {{"mission", firmware::summary_json(summary)},
-                               {"timing", executive::timing_json(stack.executive())},
-                               {"schedule", firmware::schedule_timing_json(stack.schedule())}});
-      std::cout << "report:  " << report_path.string() << '\n';
+
+    // Each output is written even when the other fails; a failure is reported and turns the exit
+    // code into 1, except after a stop signal, whose 128 + N stands.
+    bool output_failed = false;
+    const auto finish = [&output_failed](firmware::PendingOutput& out, const std::string& content, const char* label) {
+      if (const std::string error = out.commit(content); !error.empty()) {
+        std::cerr << "ringlet: " << error << '\n';
+        output_failed = true;
+      } else {
+        std::cout << label << out.path().string() << '\n';
+      }
+    };
+    if (report) {
+      const nlohmann::json j{{"mission", firmware::summary_json(summary)},
+                             {"timing", executive::timing_json(stack.executive())},
+                             {"schedule", firmware::schedule_timing_json(stack.schedule())}};
+      finish(*report, j.dump(2) + "\n", "report:  ");
     }
-    if (!svg_path.empty()) {
-      if (svg_path.has_parent_path()) std::filesystem::create_directories(svg_path.parent_path());
-      if (firmware::write_picture(svg_path, stack, summary)) {
-        std::cout << "picture: " << svg_path.string() << '\n';
+    if (svg) {
+      std::ostringstream picture;
+      if (firmware::write_picture(picture, stack, summary)) {
+        finish(*svg, picture.str(), "picture: ");
       } else {
         std::cerr << "ringlet: no picture: the " << cfg.backend << " backend has no world to draw\n";
       }
     }
-    return firmware::exit_code(summary);
+    const int code = firmware::exit_code(summary);
+    return output_failed && !summary.interrupted ? 1 : code;
+  } catch (const firmware::UsageError& e) {
+    std::cerr << "ringlet: " << e.what() << '\n';
+    return 2;
+  } catch (const firmware::OutputError& e) {
+    std::cerr << "ringlet: " << e.what() << '\n';
+    return 2;
   } catch (const firmware::ConfigError& e) {
     std::cerr << "ringlet: " << e.what() << '\n';
     return 2;

@@ -1,16 +1,12 @@
 // The world file reader: one statement per line, checked as it is read; the checks that need the
 // bounds run after the last line, because the format does not force bounds to come first.
 // Everything goes into a local World that is returned only when the whole file was accepted.
-#include <cerrno>
-#include <array>
-#include <cstdio>
-#include <memory>
 #include <span>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "polygon_check.hpp"
+#include "ringlet/hal/read_file.hpp"
 #include "ringlet/sim/world.hpp"
 #include "world_lexer.hpp"
 
@@ -202,6 +198,7 @@ class WorldParser {
     const Vec2 at = point(s, 0, "x", "y", "");
     const double heading_deg = number(s, 2, "heading_deg");
     world_.start = hal::Pose2{at.x, at.y, hal::wrap_angle(hal::deg_to_rad(heading_deg))};
+    world_.start_line = s.line;
     start_line_ = s.line;
   }
 
@@ -360,28 +357,15 @@ class WorldParser {
   std::vector<PlacedPoint> placed_;
 };
 
-struct FileCloser {
-  void operator()(std::FILE* file) const noexcept { std::fclose(file); }
-};
-
 }  // namespace
 
 World parse_world(std::string_view text, std::string_view source) { return WorldParser(source).parse(text); }
 
 World load_world(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  const auto cannot_read = [&name](int error) {
-    return WorldError(name + ": cannot read world file: " + std::generic_category().message(error));
-  };
-  const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(name.c_str(), "rb"));
-  if (!file) throw cannot_read(errno);
-  std::string text;
-  std::array<char, 4096> buffer{};
-  std::size_t got = 0;
-  while ((got = std::fread(buffer.data(), 1, buffer.size(), file.get())) > 0) text.append(buffer.data(), got);
-  // A directory opens fine on Linux and fails only here, with EISDIR.
-  if (std::ferror(file.get()) != 0) throw cannot_read(errno);
-  return parse_world(text, name);
+  // Bounded: a directory, a FIFO or /dev/zero is refused before a byte is read.
+  const hal::FileRead file = hal::read_file(path, "world file");
+  if (!file.ok()) throw WorldError(file.error);
+  return parse_world(file.bytes, path.string());
 }
 
 }  // namespace ringlet::sim

@@ -147,6 +147,46 @@ TEST(TaskTable, HyperperiodAtTheLimitAcceptedJustAboveRefused) {
   EXPECT_TRUE(has_problem(validate(ExecutiveConfig{}, above), {"common multiple"}));
 }
 
+TEST(TaskTable, OverloadInEveryFrameListsTheFirstProblemsAndCountsTheRest) {
+  // 6 + 6 ms in a 10 ms period in each of the 100,000 frames of the hyperperiod: spelling out
+  // every frame would be 100,000 lines (17 MB); the first kMaxProblemsListed are enough.
+  const std::vector<TaskSpec> table = {spec("left", 1, 0, 6ms), spec("right", 1, 0, 6ms),
+                                       spec("slow", static_cast<int>(kMaxHyperperiod), 0, Nanos{1})};
+  const auto problems = validate(config_with_period(10ms), table);
+  ASSERT_EQ(problems.size(), kMaxProblemsListed + 1) << dump(problems);
+  EXPECT_TRUE(has_problem({problems.front()}, {"frame 0 ", "left", "right", "slow"})) << dump(problems);
+  EXPECT_TRUE(has_problem({problems[kMaxProblemsListed - 1]}, {"frame 19 "})) << dump(problems);
+  EXPECT_EQ(problems.back(), "... and " + std::to_string(kMaxHyperperiod - kMaxProblemsListed) + " more problems");
+}
+
+TEST(TaskTable, ManyBadRowsAreBoundedToo) {
+  std::vector<TaskSpec> table;
+  for (int i = 0; i < 30; ++i) table.push_back(spec("free" + std::to_string(i), 1, 0, Nanos{0}));
+  const auto problems = validate(ExecutiveConfig{}, table);
+  ASSERT_EQ(problems.size(), kMaxProblemsListed + 1) << dump(problems);
+  EXPECT_EQ(problems.back(), "... and 10 more problems");
+}
+
+TEST(TaskTable, MoreRowsThanAllowedRefusedBeforeTheOverloadWalk) {
+  std::vector<TaskSpec> table;
+  for (std::size_t i = 0; i <= kMaxTasks; ++i) table.push_back(spec("t" + std::to_string(i), 1, 0, Nanos{1}));
+  const auto problems = validate(ExecutiveConfig{}, table);
+  ASSERT_EQ(problems.size(), 1U) << dump(problems);
+  EXPECT_TRUE(has_problem(problems, {std::to_string(kMaxTasks + 1) + " rows", "at most " + std::to_string(kMaxTasks)}));
+  table.pop_back();
+  EXPECT_TRUE(validate(ExecutiveConfig{}, table).empty()) << "exactly kMaxTasks rows are fine";
+}
+
+TEST(TaskTable, ListProblemsShowsAtMostTheLimit) {
+  std::vector<std::string> many;
+  for (int i = 0; i < 25; ++i) many.push_back("p" + std::to_string(i));
+  const std::string text = list_problems(many);
+  EXPECT_EQ(text.rfind("\n  - p0\n  - p1\n", 0), 0U) << text;
+  EXPECT_NE(text.find("\n  - p19\n  - ... and 5 more"), std::string::npos) << text;
+  EXPECT_EQ(text.find("p20"), std::string::npos) << text;
+  EXPECT_EQ(list_problems(std::vector<std::string>{"only"}), "\n  - only");
+}
+
 TEST(TaskTable, PolicyNamesRoundTrip) {
   for (const auto p : {OverrunPolicy::kWarn, OverrunPolicy::kSkip, OverrunPolicy::kDegrade, OverrunPolicy::kFailsafe}) {
     OverrunPolicy parsed = p == OverrunPolicy::kWarn ? OverrunPolicy::kFailsafe : OverrunPolicy::kWarn;

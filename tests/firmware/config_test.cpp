@@ -56,7 +56,7 @@ TEST(FirmwareConfig, MissingFileNamesIt) {
     (void)load_config("/nonexistent/ringlet.toml");
     FAIL() << "no error";
   } catch (const ConfigError& e) {
-    EXPECT_STREQ(e.what(), "/nonexistent/ringlet.toml: cannot read configuration file");
+    EXPECT_STREQ(e.what(), "/nonexistent/ringlet.toml: cannot read configuration file: No such file or directory");
   }
 }
 
@@ -104,7 +104,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"[telemetry]", "[camera]\nenabled = true\nbackend = \"opencv\"\n[telemetry]",
                 "camera.source: the \"opencv\" camera needs a source"},
         BadCase{"[telemetry]", "[camera]\nformat = \"rgb565\"\n[telemetry]", "camera.format: must be one of \"yuyv\", \"bgr\""},
-        BadCase{"[telemetry]", "[vision]\nskip = 0\n[telemetry]", "vision.skip: must be between 1 and 1000"}));
+        BadCase{"[telemetry]", "[vision]\nskip = 0\n[telemetry]", "vision.skip: must be between 1 and 1000"},
+        BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 1.9 },",
+                "executive.tasks[0].budget_us: must be a whole number of microseconds, got 1.9"},
+        BadCase{"timeout_s", "timeout_s = 1e6", "mission.timeout_s: must be between 0.01 and 86400, got 1e+06"},
+        BadCase{"timeout_s", "timeout_s = nan", "mission.timeout_s: must be between 0.01 and 86400, got nan"}));
 
 TEST(FirmwareConfig, SimBackendNeedsAWorld) {
   const std::string message = error_of(with_line(shipped_config_text(), "world", "# no world"));

@@ -82,7 +82,7 @@ TEST(SimWorldParser, DirectoryIsNotAWorldFile) {
     (void)load_world(kTestWorlds);
     FAIL() << "no exception";
   } catch (const WorldError& e) {
-    EXPECT_EQ(std::string(e.what()), kTestWorlds + ": cannot read world file: Is a directory");
+    EXPECT_EQ(std::string(e.what()), kTestWorlds + ": cannot read world file: not a regular file (a directory)");
   }
 }
 

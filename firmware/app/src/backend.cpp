@@ -1,21 +1,50 @@
 #include "ringlet/firmware/stack.hpp"
 
+#include <sstream>
+
+#include "ringlet/sim/collision.hpp"
+
 #ifdef RINGLET_HAVE_OPENCV_CAMERA
 #include "ringlet/hal/opencv_camera.hpp"
 #endif
 
 namespace ringlet::firmware {
 
+namespace {
+
+// The world named by sim.world; a file that cannot be read is named with the key that named it.
+sim::World load_world_of(const FirmwareConfig& config) {
+  try {
+    return sim::load_world(config.world);
+  } catch (const sim::WorldError& e) {
+    const std::string message = e.what();
+    // Errors inside the world file already say "<world>:<line>:"; only add where the key is.
+    if (message.rfind(config.world.string() + ": cannot read", 0) != 0) throw;
+    throw sim::WorldError(config.positions.at("sim.world") + ": sim.world: " + message);
+  }
+}
+
+}  // namespace
+
 std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config) {
   if (config.backend == "sim") {
-    sim::World world = sim::load_world(config.world);
+    sim::World world = load_world_of(config);
+    // Checked here, not only in SimRobot, so that the message names both places: the world's
+    // start line and the configuration's robot radius.
+    if (sim::disc_collides(world, sim::Vec2{world.start.x, world.start.y}, config.sim.robot_radius)) {
+      std::ostringstream s;
+      s << config.world.string() << ':' << world.start_line << ": start pose (" << world.start.x << ", "
+        << world.start.y << ") collides with an obstacle or the bounds for a robot of radius "
+        << config.sim.robot_radius << " m (sim.robot_radius, " << config.positions.at("sim.robot_radius") << ")";
+      throw sim::WorldError(s.str());
+    }
     try {
       return std::make_unique<sim::SimRobot>(std::move(world), config.sim);
     } catch (const std::invalid_argument& e) {
-      throw ConfigError(config.source.string() + ": sim: " + e.what());
+      throw ConfigError(config.positions.at("sim") + ": sim: " + e.what());
     }
   }
-  throw ConfigError(config.source.string() + ": robot.backend: \"" + config.backend +
+  throw ConfigError(config.positions.at("robot.backend") + ": robot.backend: \"" + config.backend +
                     "\" is not available in this build yet (the SocketCAN backend arrives with the real-board "
                     "work); use \"sim\"");
 }
@@ -31,11 +60,12 @@ std::unique_ptr<hal::Camera> make_camera(const FirmwareConfig& config, const hal
   try {
     return std::make_unique<hal::OpenCvCamera>(c, clock);
   } catch (const hal::CameraError& e) {
-    throw ConfigError(config.source.string() + ": camera: " + e.what());
+    throw ConfigError(config.positions.at("camera.source") + ": camera.source: " + e.what());
   }
 #else
   (void)clock;
-  throw ConfigError(config.source.string() + ": camera.backend: this build has no OpenCV camera (OpenCV was not found)");
+  throw ConfigError(config.positions.at("camera.backend") +
+                    ": camera.backend: this build has no OpenCV camera (OpenCV was not found)");
 #endif
 }
 
@@ -43,7 +73,7 @@ std::unique_ptr<vision::VisionPipeline> make_vision(const FirmwareConfig& config
   vision::ColourTable table = vision::ColourTable::from_thresholds(vision::ColourThresholds{});
   if (!config.vision.lut.empty()) {
     vision::ColourTableLoad loaded = vision::ColourTable::load(config.vision.lut);
-    if (!loaded.table) throw ConfigError(config.source.string() + ": vision.lut: " + loaded.error);
+    if (!loaded.table) throw ConfigError(config.positions.at("vision.lut") + ": vision.lut: " + loaded.error);
     table = std::move(*loaded.table);
   }
   vision::VisionConfig v;

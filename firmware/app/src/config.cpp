@@ -1,13 +1,14 @@
 #include "ringlet/firmware/config.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <set>
 #include <sstream>
 
 #include <toml++/toml.h>
 
 #include "ringlet/hal/geometry.hpp"
+#include "ringlet/hal/read_file.hpp"
 
 namespace ringlet::firmware {
 namespace {
@@ -135,6 +136,10 @@ void read_tasks(Section& exec, FirmwareConfig& cfg, const std::string& file, con
   if (n == nullptr) exec.fail_missing("tasks", "the task table is missing (an array of { name, every, phase, budget_us, policy })");
   const auto* rows = n->as_array();
   if (rows == nullptr) exec.fail(*n, "tasks", "must be an array of tables");
+  if (rows->size() > executive::kMaxTasks) {
+    exec.fail(*n, "tasks", "has " + std::to_string(rows->size()) + " rows; at most " +
+                               std::to_string(executive::kMaxTasks) + " are allowed");
+  }
   const double base_hz = 1e9 / static_cast<double>(cfg.executive.period.count());
   for (std::size_t i = 0; i < rows->size(); ++i) {
     const toml::node& row_node = *rows->get(i);
@@ -161,8 +166,17 @@ void read_tasks(Section& exec, FirmwareConfig& cfg, const std::string& file, con
       t.every = r.integer("every", 1, 1, 100000);
     }
     t.phase = r.integer("phase", 0, 0, t.every - 1);
-    t.budget = hal::from_micros(static_cast<std::int64_t>(r.number("budget_us", 0.0, 1.0, 1e7)));
-    if (r.find("budget_us") == nullptr) r.fail_missing("budget_us", "every task needs a budget in microseconds");
+    // Whole microseconds: a fraction would be cut off silently by the conversion, and no budget
+    // needs sub-microsecond precision.
+    const toml::node* budget = r.find("budget_us");
+    if (budget == nullptr) r.fail_missing("budget_us", "every task needs a budget in microseconds");
+    const double budget_us = r.number("budget_us", 0.0, 1.0, 1e7);
+    if (budget_us != std::floor(budget_us)) {
+      std::ostringstream s;
+      s << "must be a whole number of microseconds, got " << budget_us;
+      r.fail(*budget, "budget_us", s.str());
+    }
+    t.budget = hal::from_micros(static_cast<std::int64_t>(budget_us));
     const std::string policy = r.text("policy", "warn", {"warn", "skip", "degrade", "failsafe"});
     (void)executive::parse_policy(policy, t.policy);
     r.reject_unknown();
@@ -173,6 +187,24 @@ void read_tasks(Section& exec, FirmwareConfig& cfg, const std::string& file, con
     for (const auto& p : problems) text += "\n  - " + p;
     throw ConfigError(text);
   }
+}
+
+// Every key's "file:line:col", for errors found after parsing. Called once the file has been
+// accepted, so the tree holds only known keys and at most kMaxTasks task rows.
+void record(const toml::node& node, const std::string& key, const std::string& file, ConfigPositions& out) {
+  if (!key.empty()) out.keys.emplace(key, where(file, node.source()));
+  if (const auto* table = node.as_table()) {
+    for (auto&& [k, v] : *table) record(v, key.empty() ? std::string(k.str()) : key + "." + std::string(k.str()), file, out);
+  } else if (const auto* array = node.as_array()) {
+    for (std::size_t i = 0; i < array->size(); ++i) record(*array->get(i), key + "[" + std::to_string(i) + "]", file, out);
+  }
+}
+
+ConfigPositions record_positions(const toml::table& root, const std::string& file) {
+  ConfigPositions positions;
+  positions.file = file;
+  record(root, "", file, positions);
+  return positions;
 }
 
 }  // namespace
@@ -234,7 +266,7 @@ FirmwareConfig parse_config(std::string_view text, const std::string& source, co
 
   Section mission = section(root, top, "mission", source);
   cfg.goal_tolerance = mission.number("goal_tolerance_m", 0.3, 0.01, 10.0);
-  cfg.timeout_s = mission.number("timeout_s", 300.0, 0.01, 1e6);
+  cfg.timeout_s = mission.number("timeout_s", 300.0, 0.01, kMaxRunSeconds);
   mission.reject_unknown();
 
   Section follower = section(root, top, "follower", source);
@@ -300,18 +332,54 @@ FirmwareConfig parse_config(std::string_view text, const std::string& source, co
   Section telemetry = section(root, top, "telemetry", source);
   cfg.trajectory_every = telemetry.integer("trajectory_every", 10, 1, 100000);
   telemetry.reject_unknown();
+  if (const std::string why = run_length_problem(cfg, cfg.timeout_s); !why.empty()) {
+    if (const toml::node* n = mission.find("timeout_s")) mission.fail(*n, "timeout_s", why);
+    mission.fail_missing("timeout_s", why);
+  }
 
   top.reject_unknown();
+  cfg.positions = record_positions(root, source);
   return cfg;
 }
 
 FirmwareConfig load_config(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError(path.string() + ": cannot read configuration file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw ConfigError(path.string() + ": error while reading configuration file");
-  return parse_config(text.str(), path.string(), path.parent_path());
+  const hal::FileRead file = hal::read_file(path, "configuration file");
+  if (!file.ok()) throw ConfigError(file.error);
+  return parse_config(file.bytes, path.string(), path.parent_path());
+}
+
+std::string ConfigPositions::at(std::string_view key) const {
+  // "executive.tasks[2].name" -> "executive.tasks[2]" -> "executive.tasks" -> "executive" -> file
+  while (!key.empty()) {
+    if (const auto it = keys.find(key); it != keys.end()) return it->second;
+    const auto cut = key.find_last_of(".[");
+    key = cut == std::string_view::npos ? std::string_view{} : key.substr(0, cut);
+  }
+  return file;
+}
+
+std::uint64_t trajectory_samples(const FirmwareConfig& config, double seconds) noexcept {
+  const double frames = std::ceil(seconds * 1e9 / static_cast<double>(config.executive.period.count()));
+  const double samples = std::ceil(frames / std::max(config.trajectory_every, 1)) + 2;
+  if (!(samples < 1e18)) return UINT64_MAX;  // also NaN: never cast what does not fit
+  return static_cast<std::uint64_t>(samples);
+}
+
+std::string run_length_problem(const FirmwareConfig& config, double seconds) {
+  std::ostringstream s;
+  if (!(std::isfinite(seconds) && seconds > 0.0 && seconds <= kMaxRunSeconds)) {
+    s << "must be a number of seconds greater than 0 and at most " << kMaxRunSeconds << ", got " << seconds;
+    return s.str();
+  }
+  const std::uint64_t samples = trajectory_samples(config, seconds);
+  if (samples <= kMaxTrajectorySamples) return {};
+  const double frames = std::ceil(seconds * 1e9 / static_cast<double>(config.executive.period.count()));
+  const auto every = static_cast<long long>(std::ceil(frames / static_cast<double>(kMaxTrajectorySamples - 2)));
+  s << "a run of " << seconds << " s records " << samples << " trajectory samples (one every "
+    << config.trajectory_every << " frames of " << hal::to_seconds(config.executive.period) * 1e3
+    << " ms), more than the " << kMaxTrajectorySamples << " the firmware keeps; shorten the run or set "
+    << "telemetry.trajectory_every to at least " << every;
+  return s.str();
 }
 
 }  // namespace ringlet::firmware

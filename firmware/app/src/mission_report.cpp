@@ -1,6 +1,7 @@
 #include "ringlet/firmware/mission_report.hpp"
 
 #include <bit>
+#include <csignal>
 #include <cstdio>
 
 #include "ringlet/sim/world_svg.hpp"
@@ -91,8 +92,16 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
   s.collisions = stack.telemetry().collisions();
   s.failsafe = stack.executive().failsafe_triggered();
   s.watchdog = outcome.watchdog_fired;
-  s.safe_state = safe_before_shutdown;
   s.interrupted = outcome.interrupted;
+  s.signal = outcome.signal;
+  s.safe_state = safe_before_shutdown || outcome.interrupted;
+  s.safe_at_end = outcome.safe_at_end;
+  const auto because = [&s](const std::string& why) {
+    s.safe_state_reason += (s.safe_state_reason.empty() ? "" : ", ") + why;
+  };
+  if (s.failsafe) because("failsafe policy");
+  if (s.watchdog) because("watchdog");
+  if (s.interrupted) because(s.signal != 0 ? signal_name(s.signal) : std::string("interrupted"));
   s.trajectory_hash = trajectory_hash(stack.telemetry().trajectory());
   const auto& schedule = stack.schedule();
   for (std::size_t i = 0; i < schedule.size(); ++i) {
@@ -110,12 +119,13 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
   char line[512];
   std::snprintf(line, sizeof line,
                 "MISSION %s — %zu/%zu goals in %.2f s (simulated on %s, %.3f s of host time)\n"
-                "  world %s, seed %llu, distance %.2f m, collisions %llu, safe state forced: %s%s%s\n"
+                "  world %s, seed %llu, distance %.2f m, collisions %llu, safe state forced: %s%s%s%s\n"
                 "  trajectory hash %016llx  run hash %016llx\n",
                 s.complete ? "COMPLETE" : (s.interrupted ? "INTERRUPTED" : "INCOMPLETE"), s.goals_reached,
                 s.goal_count, s.mission_seconds, s.backend.c_str(), s.wall_seconds, s.world.c_str(),
                 static_cast<unsigned long long>(s.seed), s.distance_m, static_cast<unsigned long long>(s.collisions),
-                s.safe_state ? "yes" : "no", s.failsafe ? " (failsafe policy)" : "", s.watchdog ? " (watchdog)" : "",
+                s.safe_state ? "yes" : "no", s.safe_state_reason.empty() ? "" : " (",
+                s.safe_state_reason.c_str(), s.safe_state_reason.empty() ? "" : ")",
                 static_cast<unsigned long long>(s.trajectory_hash), static_cast<unsigned long long>(s.run_hash));
   out << line;
   for (const auto& m : s.machines) {
@@ -174,9 +184,12 @@ nlohmann::json summary_json(const MissionSummary& s) {
           {"distance_m", s.distance_m},
           {"collisions", s.collisions},
           {"safe_state_forced", s.safe_state},
+          {"safe_state_reason", s.safe_state_reason.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.safe_state_reason)},
+          {"safe_state_at_end", s.safe_at_end},
           {"failsafe", s.failsafe},
           {"watchdog", s.watchdog},
           {"interrupted", s.interrupted},
+          {"signal", s.signal != 0 ? nlohmann::json(signal_name(s.signal)) : nlohmann::json(nullptr)},
           {"trajectory_hash", hash},
           {"run_hash", run},
           {"machines", machines},
@@ -189,7 +202,7 @@ nlohmann::json summary_json(const MissionSummary& s) {
             {"max_error_deg", hal::rad_to_deg(s.head.max_error)}}}};
 }
 
-bool write_picture(const std::filesystem::path& path, const FirmwareStack& stack, const MissionSummary& s) {
+bool write_picture(std::ostream& out, const FirmwareStack& stack, const MissionSummary& s) {
   const auto* sim = stack.sim_robot();
   if (sim == nullptr) return false;
   std::vector<sim::Vec2> collisions;
@@ -198,13 +211,13 @@ bool write_picture(const std::filesystem::path& path, const FirmwareStack& stack
   std::snprintf(caption, sizeof caption, "%s: %zu/%zu goals in %.1f s, %.1f m, %llu collisions (seed %llu)",
                 s.world.c_str(), s.goals_reached, s.goal_count, s.mission_seconds, s.distance_m,
                 static_cast<unsigned long long>(s.collisions), static_cast<unsigned long long>(s.seed));
-  sim::write_world_svg(path, sim->world(),
+  sim::write_world_svg(out, sim->world(),
                        sim::RunOverlay{stack.telemetry().trajectory(), collisions, s.goals_reached, caption});
   return true;
 }
 
 int exit_code(const MissionSummary& s) noexcept {
-  if (s.interrupted) return 130;
+  if (s.interrupted) return 128 + (s.signal != 0 ? s.signal : SIGINT);
   if (s.safe_state) return 4;
   if (!s.complete) return 3;
   return 0;

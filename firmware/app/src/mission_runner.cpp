@@ -94,6 +94,16 @@ class Narrator {
 
 }  // namespace
 
+std::string signal_name(int signo) {
+  switch (signo) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    case SIGQUIT: return "SIGQUIT";
+    default: return "signal " + std::to_string(signo);
+  }
+}
+
 RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomic<bool>& interrupt, std::ostream& log) {
   const auto& cfg = stack.config();
   for (const auto& w : executive::apply_realtime_settings(cfg.realtime)) log << "ringlet: warning: " << w << '\n';
@@ -125,6 +135,7 @@ RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomi
     }
   }
   actuators.enter_safe_state();  // clean shutdown: motors stopped, head held
+  outcome.safe_at_end = actuators.in_safe_state();
   outcome.interrupted = interrupt.load();
   outcome.schedule_seconds = static_cast<double>(exec.next_frame()) * hal::to_seconds(cfg.executive.period);
   outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

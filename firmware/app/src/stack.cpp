@@ -9,10 +9,11 @@ namespace {
 
 std::vector<executive::TaskBinding> bind_tasks(const std::vector<executive::TaskSpec>& table,
                                          const std::vector<std::pair<const char*, executive::Task*>>& provided,
-                                         const std::string& source) {
+                                         const ConfigPositions& at) {
   std::vector<executive::TaskBinding> bound;
   std::vector<std::string> problems;
-  for (const auto& spec : table) {
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const auto& spec = table[i];
     executive::Task* task = nullptr;
     for (const auto& [name, impl] : provided) {
       if (spec.name == name) task = impl;
@@ -20,7 +21,8 @@ std::vector<executive::TaskBinding> bind_tasks(const std::vector<executive::Task
     if (task == nullptr) {
       std::string names;
       for (const auto& p : provided) names += (names.empty() ? "" : ", ") + std::string(p.first);
-      problems.push_back("task '" + spec.name + "' is not a task this firmware provides (" + names + ")");
+      const std::string key = "executive.tasks[" + std::to_string(i) + "].name";
+      problems.push_back(at.at(key) + ": " + key + ": task '" + spec.name + "' is not a task this firmware provides (" + names + ")");
     }
     bound.push_back({spec, task});
   }
@@ -30,16 +32,10 @@ std::vector<executive::TaskBinding> bind_tasks(const std::vector<executive::Task
     if (!listed) problems.push_back("task '" + std::string(name) + "' is missing from the table: every task must be scheduled");
   }
   if (!problems.empty()) {
-    std::string text = source + ": executive.tasks:";
-    for (const auto& p : problems) text += "\n  - " + p;
-    throw ConfigError(text);
+    throw ConfigError(at.at("executive.tasks") + ": executive.tasks: the table does not match the firmware's tasks:" +
+                      executive::list_problems(problems));
   }
   return bound;
-}
-
-std::size_t trajectory_capacity(const FirmwareConfig& c) {
-  const double frames = c.timeout_s * 1e9 / static_cast<double>(c.executive.period.count());
-  return static_cast<std::size_t>(std::ceil(frames / c.trajectory_every)) + 2;
 }
 
 // Deep enough that a tool polling every few milliseconds sees every FsmStatus of a frame.
@@ -54,7 +50,7 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config)
       board_(kWhiteboardGenerations),
       fsm_status_log_(std::make_unique<FsmStatusLog>()),
       mission_(mission_goals(*robot_), config_.goal_tolerance, config_.follower),
-      telemetry_(trajectory_capacity(config_), 1024, mission_.goal_count()),
+      telemetry_(static_cast<std::size_t>(trajectory_samples(config_, config_.timeout_s)), 1024, mission_.goal_count()),
       ball_tracker_(board_),
       mission_machine_(board_, mission_),
       safety_(board_, config_.safety.stop_range, config_.safety.release_range, config_.safety.hold_ms),
@@ -88,7 +84,7 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config)
                                                                   {"whiteboard", &whiteboard_task_}};
   if (config_.camera.enabled) {
     if (owned_camera_) camera_ = owned_camera_.get();
-    if (camera_ == nullptr) throw ConfigError(config_.source.string() + ": camera: the backend has no camera");
+    if (camera_ == nullptr) throw ConfigError(config_.positions.at("camera.enabled") + ": camera.enabled: the backend has no camera");
     pipeline_ = make_vision(config_);
     const VisionDeadline deadline = config_.clock == ClockMode::kLockstep ? VisionDeadline::kNone
                                     : config_.executive.overrun_on_cpu_time ? VisionDeadline::kCpu
@@ -96,7 +92,7 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config)
     vision_task_.emplace(*camera_, *pipeline_, state_, board_, deadline);
     provided.emplace_back("vision", &*vision_task_);
   }
-  auto tasks = bind_tasks(config_.tasks, provided, config_.source.string());
+  auto tasks = bind_tasks(config_.tasks, provided, config_.positions);
   // Lockstep is a pure function of seed and configuration: there the policies act on the tasks'
   // modelled costs, and what the host measured is reported beside them.
   executive::ExecutiveConfig exec_config = config_.executive;

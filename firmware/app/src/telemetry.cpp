@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/firmware/config.hpp"
+
 namespace ringlet::firmware {
 
 Telemetry::Telemetry(std::size_t trajectory_capacity, std::size_t collision_capacity, std::size_t goal_count) {
-  trajectory_.reserve(trajectory_capacity);
+  // The configuration refuses runs that need more; the cap here keeps a stack built from any
+  // other config (a test, a tool) from reserving without limit.
+  trajectory_.reserve(std::min<std::size_t>(trajectory_capacity, kMaxTrajectorySamples));
   collision_points_.reserve(collision_capacity);
   goal_times_.reserve(goal_count);
 }

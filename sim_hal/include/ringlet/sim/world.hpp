@@ -75,6 +75,7 @@ struct World {
   Vec2 min{};  // bounds: the walls of the world, an obstacle for the robot and the laser
   Vec2 max{};
   hal::Pose2 start{};
+  int start_line = 0;  // the line of the `start` statement, for messages about the start pose
   std::vector<Circle> circles;
   std::vector<Polygon> polygons;
   std::vector<Marking> markings;
@@ -91,7 +92,8 @@ class WorldError : public std::runtime_error {
 
 /// Parses world text. `source` names it in error messages ("<source>:<line>: <message>").
 [[nodiscard]] World parse_world(std::string_view text, std::string_view source);
-/// Reads and parses a world file; an unreadable file is a WorldError naming the path.
+/// Reads (hal::read_file: a regular file of at most hal::kMaxTextFileBytes) and parses a world
+/// file; an unreadable file is a WorldError naming the path and why.
 [[nodiscard]] World load_world(const std::filesystem::path& path);
 
 }  // namespace ringlet::sim

@@ -4,8 +4,11 @@
 // all-or-nothing: any problem is a ConfigError "file:line:col: key: message" and no config exists.
 // Unknown keys are errors too, so a typo never silently falls back to a default.
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ringlet/behaviour/move_to_waypoint.hpp"
@@ -52,8 +55,27 @@ struct VisionSettings {
   int skip = 10;              // Mi-Pal's RANSAC_SKIP
 };
 
+/// Where each key of the file was written, so that problems found after parsing (binding the
+/// tasks, the world's start pose, the backend, the camera) still name "file:line:col".
+struct ConfigPositions {
+  std::string file;  // the configuration file
+  // "robot.backend", "executive.tasks[2]", "executive.tasks[2].name" -> "file:line:col"
+  std::map<std::string, std::string, std::less<>> keys;
+
+  /// "file:line:col" of `key`; for a key the file does not contain (a default), that of the
+  /// nearest enclosing table or array that it does contain; else just the file.
+  [[nodiscard]] std::string at(std::string_view key) const;
+};
+
+/// Longest run the firmware accepts (--duration, mission.timeout_s): one day of schedule time.
+inline constexpr double kMaxRunSeconds = 86400.0;
+/// Most trajectory samples a run may record (24 MB of poses, sized at start-up): a run whose
+/// length / (period · telemetry.trajectory_every) exceeds it is refused at start.
+inline constexpr std::uint64_t kMaxTrajectorySamples = 1'000'000;
+
 struct FirmwareConfig {
   std::filesystem::path source;     // the file it came from
+  ConfigPositions positions;        // where each key was written in it
   std::string backend = "sim";      // robot.backend
   std::filesystem::path world;      // sim.world, resolved relative to the config file
   sim::SimConfig sim{};             // sim.* (its period and seed come from executive/sim)
@@ -70,9 +92,16 @@ struct FirmwareConfig {
   int trajectory_every = 10;        // telemetry.trajectory_every: frames between samples
 };
 
+/// Reads the file with hal::read_file (regular files up to hal::kMaxTextFileBytes only) and parses it.
 [[nodiscard]] FirmwareConfig load_config(const std::filesystem::path& path);
 /// Parses config text; `source` names it in messages, relative paths resolve against `base_dir`.
 [[nodiscard]] FirmwareConfig parse_config(std::string_view text, const std::string& source,
                                           const std::filesystem::path& base_dir);
+
+/// Trajectory samples a run of `seconds` records with this configuration (the buffer's size).
+[[nodiscard]] std::uint64_t trajectory_samples(const FirmwareConfig& config, double seconds) noexcept;
+/// Empty when a run of `seconds` fits the limits (finite, 0 < seconds <= kMaxRunSeconds, at most
+/// kMaxTrajectorySamples samples), else why not — a sentence to put after the flag or key.
+[[nodiscard]] std::string run_length_problem(const FirmwareConfig& config, double seconds);
 
 }  // namespace ringlet::firmware

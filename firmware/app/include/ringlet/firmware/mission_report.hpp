@@ -33,10 +33,13 @@ struct MissionSummary {
   double wall_seconds = 0;
   double distance_m = 0;        // from wheel odometry
   std::uint64_t collisions = 0;
-  bool safe_state = false;      // entered before the normal shutdown (failsafe or watchdog)
+  bool safe_state = false;      // forced before the normal shutdown (failsafe, watchdog or a signal)
+  std::string safe_state_reason;  // why: "failsafe policy", "watchdog", "SIGINT", ... comma-separated
+  bool safe_at_end = false;     // the actuators reported the safe state after shutdown
   bool failsafe = false;
   bool watchdog = false;
   bool interrupted = false;
+  int signal = 0;               // the stop signal that ended the run (0: none)
   std::uint64_t trajectory_hash = 0;  // FNV-1a over the recorded poses: equal hashes, equal runs
   std::uint64_t run_hash = 0;         // the trajectory hash and every decision of the schedule, vision
                                       // and the machines (no host measurements): the golden-run check
@@ -46,6 +49,8 @@ struct MissionSummary {
   std::optional<VisionStats> vision;  // with a camera: what vision found
 };
 
+/// `safe_before_shutdown`: the failsafe policy or the watchdog forced the safe state; a signal in
+/// `outcome` counts as forcing it too (it commands the safe state at once, see run_mission).
 [[nodiscard]] MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, bool safe_before_shutdown);
 
 /// FNV-1a over the bit patterns of the poses.
@@ -54,11 +59,12 @@ struct MissionSummary {
 void print_summary(std::ostream& out, const MissionSummary& s);
 [[nodiscard]] nlohmann::json summary_json(const MissionSummary& s);
 
-/// The world with the driven trajectory (sim backend only; returns false otherwise).
-bool write_picture(const std::filesystem::path& path, const FirmwareStack& stack, const MissionSummary& s);
+/// The world with the driven trajectory as SVG (sim backend only; returns false otherwise).
+bool write_picture(std::ostream& out, const FirmwareStack& stack, const MissionSummary& s);
 
 /// Process exit code for a run: 0 mission complete; 3 incomplete (time ran out); 4 the safe state
-/// was forced (failsafe policy or watchdog); 130 interrupted by SIGINT/SIGTERM.
+/// was forced (failsafe policy or watchdog); 128 + the signal's number when a stop signal ended it
+/// (130 SIGINT, 143 SIGTERM, 129 SIGHUP, 131 SIGQUIT; 130 when the signal is unknown).
 [[nodiscard]] int exit_code(const MissionSummary& s) noexcept;
 
 }  // namespace ringlet::firmware

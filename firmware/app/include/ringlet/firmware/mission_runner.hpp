@@ -2,16 +2,27 @@
 // Runs a built stack: real-time settings, the watchdog, a non-real-time thread that prints the
 // executive's events and progress, the executive itself, and the shutdown into the safe state.
 #include <atomic>
+#include <csignal>
 #include <ostream>
+#include <string>
 
 #include "ringlet/executive/executive.hpp"
 #include "ringlet/firmware/stack.hpp"
 
 namespace ringlet::firmware {
 
+/// The signals that end a run in order: each stops the cycle, commands the safe state, and the
+/// run is summarised and reported as usual; the binary then exits with 128 + the signal's number.
+inline constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+
+/// "SIGINT", "SIGTERM", "SIGHUP", "SIGQUIT", else "signal N".
+[[nodiscard]] std::string signal_name(int signo);
+
 struct RunOutcome {
   executive::StopReason reason = executive::StopReason::kFrameLimit;
-  bool interrupted = false;     // SIGINT/SIGTERM
+  bool interrupted = false;     // a stop signal (or the interrupt flag) ended the run
+  int signal = 0;               // which signal, when the caller knows it (0: none or unknown)
+  bool safe_at_end = false;     // the robot's actuators reported the safe state after shutdown
   bool watchdog_fired = false;
   double schedule_seconds = 0;  // frames run × period
   double wall_seconds = 0;      // how long it took on the host

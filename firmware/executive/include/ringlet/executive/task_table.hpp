@@ -1,6 +1,7 @@
 #pragma once
 // The task table: the one place that says what runs, how often, in which frame, in which order
 // and with what budget (cf. ArduPilot's scheduler table, F Prime's rate groups).
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -54,10 +55,22 @@ struct ExecutiveConfig {
 
 /// Longest hyperperiod (in frames) the overload check will walk; beyond it the table is refused.
 inline constexpr std::uint64_t kMaxHyperperiod = 100'000;
+/// Most rows a table may have: a controller has a handful of tasks, and the overload check walks
+/// rows × hyperperiod, which must stay quick however the table was written.
+inline constexpr std::size_t kMaxTasks = 64;
+/// Most problems validate() spells out; the rest are counted in one last "... and K more" line,
+/// so a table overloaded in all of its 100,000 frames gives 21 lines, not 100,001.
+inline constexpr std::size_t kMaxProblemsListed = 20;
 
-/// Every problem with a table, one message each; empty means valid. Checks: period > 0; names
-/// non-empty and unique; every >= 1; 0 <= phase < every; 0 < budget <= period; and, over the
-/// hyperperiod, no frame whose active budgets add up to more than the period.
+/// The problems with a table, one message each; empty means valid. Checks: period > 0; at most
+/// kMaxTasks rows; names non-empty and unique; every >= 1; 0 <= phase < every;
+/// 0 < budget <= period; and, over the hyperperiod, no frame whose active budgets add up to more
+/// than the period. At most kMaxProblemsListed messages, then "... and K more problems".
 [[nodiscard]] std::vector<std::string> validate(const ExecutiveConfig& config, std::span<const TaskSpec> tasks);
+
+/// `problems` as "\n  - problem" lines, at most `max_listed` of them followed by "... and K more"
+/// when there are more: every list of problems shown to a person goes through this.
+[[nodiscard]] std::string list_problems(std::span<const std::string> problems,
+                                        std::size_t max_listed = kMaxProblemsListed);
 
 }  // namespace ringlet::executive
