@@ -74,10 +74,6 @@ ColourTable load_table(const std::filesystem::path& file) {
   return std::move(*loaded.table);
 }
 
-namespace {
-
-/// A finite number in [lo, hi]: CLI11's Range lets NaN through (every comparison with NaN is
-/// false), and a NaN pitch or focal length would make the pipeline's geometry NaN.
 CLI::Validator finite_range(double lo, double hi, const std::string& unit) {
   return CLI::Validator(
       [lo, hi, unit](const std::string& text) -> std::string {
@@ -91,14 +87,13 @@ CLI::Validator finite_range(double lo, double hi, const std::string& unit) {
         if (used != text.size()) return "not a number: " + text;
         if (!std::isfinite(v)) return "must be a finite number, got " + text;
         if (v < lo || v > hi) {
-          return "must be within [" + fmt_number(lo) + ", " + fmt_number(hi) + "] " + unit + ", got " + text;
+          return "must be within [" + fmt_number(lo) + ", " + fmt_number(hi) + "]" + (unit.empty() ? "" : " " + unit) +
+                 ", got " + text;
         }
         return {};
       },
       "FINITE in [" + fmt_number(lo) + ", " + fmt_number(hi) + "]");
 }
-
-}  // namespace
 
 std::string fmt_number(double v) {
   std::ostringstream s;

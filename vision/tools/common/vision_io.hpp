@@ -67,7 +67,12 @@ struct CameraOptions {
   [[nodiscard]] hal::HeadJoints head() const;
 };
 
-/// A number as the shortest text that reads it back ("29.5", "1e+05").
+/// A CLI11 check: a finite number in [lo, hi] (`unit` follows the range in the message).
+/// CLI11's Range lets NaN through (every comparison with NaN is false), and a NaN pitch or focal
+/// length would make the pipeline's geometry NaN.
+[[nodiscard]] CLI::Validator finite_range(double lo, double hi, const std::string& unit);
+
+/// A number as text ("29.5", "100000").
 [[nodiscard]] std::string fmt_number(double v);
 
 [[nodiscard]] nlohmann::json result_json(const VisionResult& result);
