@@ -12,7 +12,11 @@
 // - AddressSanitizer / ThreadSanitizer builds: the sanitizer runtime owns malloc (its own
 //   allocator, its interceptors); defining malloc here would bypass it and break its free. There
 //   the sanitizer's allocation hook counts instead (__sanitizer_install_malloc_and_free_hooks):
-//   it runs on every allocation its allocator makes, operator new and every C function alike.
+//   ASan runs it on every allocation, operator new and every C function alike. TSan runs it for
+//   malloc, calloc, realloc and operator new only, not for the aligned C functions
+//   (posix_memalign, aligned_alloc, memalign, valloc, pvalloc): in TSan builds this file defines
+//   those five, counts, and forwards to TSan's own implementation (__interceptor_<name>, which
+//   the runtime's weak <name> aliases; a definition in the executable takes precedence).
 #include "allocation_counter.hpp"
 
 #include <atomic>
@@ -22,11 +26,17 @@
 #include <cstdlib>
 #include <new>
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(__SANITIZE_ADDRESS__)
 #define RINGLET_COUNT_WITH_SANITIZER_HOOK 1
+#elif defined(__SANITIZE_THREAD__)
+#define RINGLET_COUNT_WITH_SANITIZER_HOOK 1
+#define RINGLET_TSAN 1
 #elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#if __has_feature(address_sanitizer)
 #define RINGLET_COUNT_WITH_SANITIZER_HOOK 1
+#elif __has_feature(thread_sanitizer)
+#define RINGLET_COUNT_WITH_SANITIZER_HOOK 1
+#define RINGLET_TSAN 1
 #endif
 #endif
 
@@ -58,7 +68,38 @@ void on_free(const volatile void*) {}
 // runs then). If the runtime refused (it keeps a few hooks only), AllocationCounter.Counts* fail.
 [[maybe_unused]] const int g_hook_slot = __sanitizer_install_malloc_and_free_hooks(on_malloc, on_free);
 
-// operator new below allocates through malloc, which the hook already counts.
+#ifdef RINGLET_TSAN
+extern "C" {
+int __interceptor_posix_memalign(void** out, std::size_t align, std::size_t size);
+void* __interceptor_aligned_alloc(std::size_t align, std::size_t size);
+void* __interceptor_memalign(std::size_t align, std::size_t size);
+void* __interceptor_valloc(std::size_t size);
+void* __interceptor_pvalloc(std::size_t size);
+
+int posix_memalign(void** out, std::size_t align, std::size_t size) noexcept {
+  count();
+  return __interceptor_posix_memalign(out, align, size);
+}
+void* aligned_alloc(std::size_t align, std::size_t size) noexcept {
+  count();
+  return __interceptor_aligned_alloc(align, size);
+}
+void* memalign(std::size_t align, std::size_t size) noexcept {
+  count();
+  return __interceptor_memalign(align, size);
+}
+void* valloc(std::size_t size) noexcept {
+  count();
+  return __interceptor_valloc(size);
+}
+void* pvalloc(std::size_t size) noexcept {
+  count();
+  return __interceptor_pvalloc(size);
+}
+}  // extern "C"
+#endif
+
+// operator new below allocates through malloc or posix_memalign, which are already counted.
 void* raw_allocate(std::size_t size, std::size_t align) noexcept {
   if (align <= alignof(std::max_align_t)) return std::malloc(size);
   void* p = nullptr;
