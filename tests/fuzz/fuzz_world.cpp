@@ -27,7 +27,10 @@ bool inside(const ringlet::sim::World& w, ringlet::sim::Vec2 v) {
 void check(const ringlet::sim::World& w) {
   if (!finite(w.min) || !finite(w.max) || !(w.min.x < w.max.x) || !(w.min.y < w.max.y)) __builtin_trap();
   const ringlet::sim::Vec2 start{w.start.x, w.start.y};
-  if (!finite(start) || !std::isfinite(w.start.theta) || !inside(w, start)) __builtin_trap();
+  if (!finite(start) || !inside(w, start)) __builtin_trap();
+  // Headings are wrapped to (-pi, pi] (a NaN fails these comparisons too).
+  if (!(std::abs(w.start.theta) <= std::numbers::pi)) __builtin_trap();
+  if (!(std::abs(w.lighting.sun_angle) <= std::numbers::pi) || !std::isfinite(w.lighting.sun_phase)) __builtin_trap();
   if (w.goals.empty()) __builtin_trap();
   for (const auto& g : w.goals) {
     if (!finite(g) || !inside(w, g)) __builtin_trap();
