@@ -1,6 +1,7 @@
 // The world file reader: one statement per line, checked as it is read; the checks that need the
 // bounds run after the last line, because the format does not force bounds to come first.
 // Everything goes into a local World that is returned only when the whole file was accepted.
+#include <cmath>
 #include <span>
 #include <string>
 #include <vector>
@@ -32,6 +33,13 @@ struct PlacedPoint {
   Token y;
   Vec2 at;
 };
+
+/// An angle in degrees as radians in (-pi, pi]. Reduced in degrees first (exact for any finite
+/// value, and a no-op within +-180): a huge but finite angle such as 1e308 overflows to infinity
+/// in radians, which wraps to NaN (found by the world fuzz target).
+double heading_rad(double degrees) {
+  return hal::wrap_angle(hal::deg_to_rad(std::remainder(degrees, 360.0)));
+}
 
 /// A token as the author wrote it, for quoting it back in a message.
 std::string as_written(const Token& token) {
@@ -197,7 +205,7 @@ class WorldParser {
     expect_args(s, 3, 3, "x y heading_deg");
     const Vec2 at = point(s, 0, "x", "y", "");
     const double heading_deg = number(s, 2, "heading_deg");
-    world_.start = hal::Pose2{at.x, at.y, hal::wrap_angle(hal::deg_to_rad(heading_deg))};
+    world_.start = hal::Pose2{at.x, at.y, heading_rad(heading_deg)};
     world_.start_line = s.line;
     start_line_ = s.line;
   }
@@ -263,7 +271,7 @@ class WorldParser {
     result.texture = in_range(s, 1, "texture", 0.0, 1.0, "in [0, 1]");
     result.sun_strength = in_range(s, 2, "sun_strength", 0.0, 0.9, "in [0, 0.9]");
     result.sun_period = positive(s, 3, "sun_period");
-    result.sun_angle = hal::deg_to_rad(number(s, 4, "sun_angle_deg"));
+    result.sun_angle = heading_rad(number(s, 4, "sun_angle_deg"));
     if (s.args.size() == 6) result.sun_phase = number(s, 5, "sun_phase");
     world_.lighting = result;
     lighting_line_ = s.line;

@@ -1,8 +1,7 @@
 // The full simulated stack (camera and vision included) on the REAL clock for 2 s at 100 Hz: the
 // executive sleeps to absolute deadlines with clock_nanosleep and measures every task. Asserted:
-// each task's p99 thread CPU time is inside its budget. Thread CPU time does not count the time
-// the thread waits for a core, so it hardly depends on what else the machine does; it does grow
-// noisier under load (caches and memory bandwidth are shared), see kLoadedQuantile.
+// each task's thread CPU time is inside its budget (see kJudgedQuantile). Thread CPU time does not
+// count the time the thread waits for a core, so it hardly depends on what else the machine does.
 // The binary runs serially (RUN_SERIAL). Wall-clock figures are printed, never asserted.
 #include <gtest/gtest.h>
 
@@ -15,14 +14,15 @@
 namespace ringlet::firmware {
 namespace {
 
-// On a machine with a busy thread on every core the executive loses frames (it runs 60-65 % of
-// them) and the thread CPU time of the smallest tasks gets noisy: a cold cache, and the
-// simulator's hand-over to its render thread (inside sense) now and then costs a millisecond.
-// Measured on the 2-core development VM, 12 loaded runs while other builds loaded it as well:
-// sense p95 45-102 us, p99 80-152 us and once 1070 us (over ~70 frames p99 is the largest
-// sample). So the loaded run judges the 95th percentile against the plain budget (200 us for
-// sense: twice the worst p95 measured).
-constexpr double kLoadedQuantile = 0.95;
+// What is judged: the 95th percentile of each task's thread CPU time against its budget, on a
+// quiet machine and on one with a busy thread on every core. Not p99: over 60-200 activations
+// p99 is the largest one or two samples, and those are the cold ones (the first frame touches
+// pages and caches) or the ones a loaded host disturbed (caches, memory bandwidth and the
+// simulator's hand-over to its render thread, inside sense, are shared). Measured on the 2-core
+// development VM, 12 loaded runs while other builds loaded it as well: sense p95 45-102 us, p99
+// 80-152 us and once 1070 us; vision p95 1.5-1.8 ms, p99 up to 2.5 ms. The budgets (sense 200 us,
+// vision 3 ms) are about twice the worst p95 measured. p50, p95 and p99 are printed for the record.
+constexpr double kJudgedQuantile = 0.95;
 
 void run_two_seconds_and_check(double quantile) {
   // The main job's stack: camera (render thread) and vision included.
@@ -60,11 +60,11 @@ void run_two_seconds_and_check(double quantile) {
               static_cast<unsigned long long>(frames.frame_overruns), static_cast<unsigned long long>(frames.slips));
 }
 
-TEST(RealClock, TwoSecondsAt100HzKeepEveryTaskP99CpuInsideItsBudget) { run_two_seconds_and_check(0.99); }
+TEST(RealClock, TwoSecondsAt100HzKeepEveryTaskCpuInsideItsBudget) { run_two_seconds_and_check(kJudgedQuantile); }
 
 TEST(RealClock, TwoSecondsAt100HzOnALoadedMachine) {
   const ringlet::test::CpuHog hog;
-  run_two_seconds_and_check(kLoadedQuantile);
+  run_two_seconds_and_check(kJudgedQuantile);
 }
 
 }  // namespace

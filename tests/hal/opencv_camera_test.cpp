@@ -6,6 +6,9 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <string>
+#include <vector>
 #include <thread>
 
 #include <opencv2/core.hpp>
@@ -119,22 +122,89 @@ TEST(OpenCvCamera, BadSourcesAreRefusedByName) {
   EXPECT_THROW(OpenCvCamera({empty.path().string(), 63, 48}, clock), CameraError);  // odd width: no YUYV
 }
 
-TEST(OpenCvCamera, WrongSizeOrUndecodableFramesStopTheReplayWithAnError) {
+// The first decodable image is checked at start-up: a folder of the wrong size is a start-up
+// error. A later frame of another size stops the replay with an error.
+TEST(OpenCvCamera, WrongSizeFramesAreErrors) {
   MonotonicClock clock;
   TempDir dir;
   write_frames(dir.path(), 1, 32, 24);  // smaller than configured
-  {
+  try {
     OpenCvCamera camera({dir.path().string(), 64, 48}, clock);
-    for (int i = 0; i < 1000 && camera.error().empty(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    EXPECT_NE(camera.error().find("frame 0 is 32x24, expected 64x48"), std::string::npos) << camera.error();
-    FrameView view;
-    EXPECT_FALSE(camera.grab_latest(view)) << "no frame was delivered";
+    FAIL() << "no error";
+  } catch (const CameraError& e) {
+    EXPECT_NE(std::string(e.what()).find(dir.path().string() + ": frame_0000.png is 32x24, expected 64x48"),
+              std::string::npos) << e.what();
   }
+  TempDir mixed;
+  write_frames(mixed.path(), 1);
+  ASSERT_TRUE(cv::imwrite((mixed.path() / "frame_0001.png").string(), frame(1, 32, 24)));
+  OpenCvCamera camera({mixed.path().string(), 64, 48}, clock);
+  FrameView view;
+  ASSERT_TRUE(grab_next(camera, view, 0, true));
+  for (int i = 0; i < 1000 && camera.error().empty(); ++i) {
+    (void)camera.grab_latest(view);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  EXPECT_NE(camera.error().find("frame 1 is 32x24, expected 64x48"), std::string::npos) << camera.error();
+}
+
+// A folder of garbage used to start, deliver nothing and say nothing (the firmware then ran
+// without a single vision frame): now it is refused at start-up, naming the first file and why.
+TEST(OpenCvCamera, FolderWithNoDecodableImageIsRefusedAtStartUp) {
+  MonotonicClock clock;
   TempDir broken;
   std::ofstream(broken.path() / "frame_0000.png") << "not a png";
-  OpenCvCamera camera({broken.path().string(), 64, 48}, clock);
-  for (int i = 0; i < 1000 && camera.error().empty(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  EXPECT_NE(camera.error().find("frame_0000.png: cannot decode image"), std::string::npos) << camera.error();
+  std::ofstream(broken.path() / "frame_0001.jpg") << "\xFF\xD8\xFF\xD9";  // a JPEG that ends at once
+  fs::create_directories(broken.path() / "frame_0002.png");           // a directory: not listed
+  try {
+    OpenCvCamera camera({broken.path().string(), 64, 48}, clock);
+    FAIL() << "no error";
+  } catch (const CameraError& e) {
+    EXPECT_NE(std::string(e.what()).find(broken.path().string() +
+                                         ": none of the 2 image files can be decoded (the first: frame_0000.png: "
+                                         "cannot decode image: not a PNG or JPEG image)"),
+              std::string::npos) << e.what();
+  }
+}
+
+// Undecodable files among good ones are skipped, counted and reported (one warning each, then a
+// summary naming the first); the good frames are all delivered, in order.
+TEST(OpenCvCamera, UndecodableFilesAreSkippedCountedAndReported) {
+  MonotonicClock clock;
+  TempDir dir;
+  write_frames(dir.path(), 3);
+  std::ofstream(dir.path() / "frame_0000a.png") << "garbage";
+  {
+    // A PNG header claiming 40000 x 40000: refused before OpenCV would allocate for it.
+    const unsigned char huge[] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A, 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                                  0, 0, 0x9C, 0x40, 0, 0, 0x9C, 0x40, 8, 2, 0, 0, 0};
+    std::ofstream(dir.path() / "frame_0001a.png", std::ios::binary).write(reinterpret_cast<const char*>(huge), sizeof huge);
+  }
+  std::vector<std::string> warnings;
+  std::mutex mutex;
+  OpenCvCamera camera({dir.path().string(), 64, 48, 30.0, PixelFormat::kBgr8}, clock, [&](const std::string& w) {
+    const std::lock_guard lock(mutex);
+    warnings.push_back(w);
+  });
+  FrameView view;
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(grab_next(camera, view, view.sequence, i == 0)) << "frame " << i;
+    EXPECT_EQ(view.sequence, static_cast<std::uint64_t>(i));
+    const cv::Mat expected = frame(i);
+    EXPECT_EQ(std::memcmp(view.data, expected.data, 64 * 48 * 3), 0) << "frame " << i;
+  }
+  for (int i = 0; i < 1000 && !camera.finished(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ASSERT_TRUE(camera.finished());
+  EXPECT_EQ(camera.error(), "");
+  EXPECT_EQ(camera.undecodable_files(), 2U);
+  const std::lock_guard lock(mutex);
+  ASSERT_EQ(warnings.size(), 3U);
+  const std::string folder = dir.path().string() + ": ";
+  EXPECT_EQ(warnings[0], folder + "frame_0000a.png: cannot decode image: not a PNG or JPEG image; skipped");
+  EXPECT_EQ(warnings[1], folder + "frame_0001a.png: cannot decode image: PNG image is 40000x40000 = 1600000000 "
+                                  "pixels, more than the limit of 16777216; skipped");
+  EXPECT_EQ(warnings[2], folder + "replay ended: 2 of 5 image files could not be decoded and were skipped (the "
+                                  "first: frame_0000a.png: cannot decode image: not a PNG or JPEG image)");
 }
 
 }  // namespace

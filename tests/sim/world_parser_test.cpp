@@ -67,6 +67,17 @@ TEST(SimWorldParser, WrapsTheStartHeading) {
   EXPECT_DOUBLE_EQ(world.start.theta, -std::numbers::pi / 2.0);
 }
 
+// Found by the world fuzz target: 1e308 degrees is finite but overflowed to infinity in
+// radians, and the heading became NaN.
+TEST(SimWorldParser, HugeFiniteAnglesStayFinite) {
+  const World world = parse_world(
+      "ringlet-world 2\nbounds 0 0 10 10\nstart 1 1 1e308\nlighting 1 0.1 0.3 2 -1e308\ngoal 5 5\n", "w");
+  EXPECT_TRUE(std::isfinite(world.start.theta));
+  EXPECT_LE(std::abs(world.start.theta), std::numbers::pi);
+  EXPECT_TRUE(std::isfinite(world.lighting.sun_angle));
+  EXPECT_LE(std::abs(world.lighting.sun_angle), std::numbers::pi);
+}
+
 TEST(SimWorldParser, MissingFileNamesThePathAndTheReason) {
   const std::string path = kTestWorlds + "/no-such.world";
   try {

@@ -1,12 +1,16 @@
 #pragma once
 // Counting heap allocations, for the tests that prove a path allocates nothing. Linking
-// ringlet_test_allocation_counter replaces the global operator new/delete (every form, aligned
-// too) in that test executable with versions that count, in every thread.
+// ringlet_test_allocation_counter into a test executable counts, in every thread, every operator
+// new (all forms, aligned too) and every C allocation function (malloc, calloc, realloc,
+// posix_memalign, aligned_alloc, memalign, valloc, pvalloc), whoever calls them: the code under
+// test, libstdc++, OpenCV, glibc. Plain builds replace those functions in the executable;
+// AddressSanitizer and ThreadSanitizer builds count through the sanitizer's allocation hook
+// (see allocation_counter.cpp).
 #include <cstdint>
 
 namespace ringlet::test {
 
-/// Allocations (operator new calls) since the program started, all threads.
+/// Allocations since the program started, all threads.
 [[nodiscard]] std::uint64_t allocations() noexcept;
 
 /// Allocations made while it lives.

@@ -150,8 +150,35 @@ TEST_F(ColourTableFile, RoundTrip) {
 TEST_F(ColourTableFile, MissingFile) {
   const auto r = ColourTable::load(path("nope.lut"));
   EXPECT_FALSE(r.table);
-  EXPECT_NE(r.error.find("nope.lut"), std::string::npos);
-  EXPECT_NE(r.error.find("no such file"), std::string::npos);
+  EXPECT_NE(r.error.find("nope.lut: No such file or directory"), std::string::npos) << r.error;
+}
+
+// Not files at all: hal::read_file refuses them before reading a byte and says what they are (both
+// used to be reported as "no such file").
+TEST_F(ColourTableFile, DirectoryAndDeviceAreNotRegularFiles) {
+  const auto dir = ColourTable::load(dir_);
+  EXPECT_FALSE(dir.table);
+  EXPECT_NE(dir.error.find("colour table " + dir_.string() + ": not a regular file (a directory)"),
+            std::string::npos) << dir.error;
+  const auto zero = ColourTable::load("/dev/zero");
+  EXPECT_FALSE(zero.table);
+  EXPECT_NE(zero.error.find("colour table /dev/zero: not a regular file (a character device)"),
+            std::string::npos) << zero.error;
+}
+
+TEST(ColourTableBytes, ParseIsTheFileFormatWithoutAFile) {
+  const ColourTable t = ColourTable::from_thresholds({}, 5);
+  const std::vector<std::uint8_t> bytes = t.serialise();
+  ASSERT_EQ(bytes.size(), 16U + (std::size_t{1} << 15));
+  const ColourTableLoad r = ColourTable::parse(bytes, "memory");
+  ASSERT_TRUE(r.table) << r.error;
+  EXPECT_EQ(*r.table, t);
+  // The source names the bytes in errors.
+  const std::vector<std::uint8_t> shortened(bytes.begin(), bytes.begin() + 20);
+  const ColourTableLoad bad = ColourTable::parse(shortened, "fuzz input");
+  EXPECT_FALSE(bad.table);
+  EXPECT_EQ(bad.error, "colour table fuzz input: size 20 bytes, expected 32784 (truncated)");
+  EXPECT_EQ(ColourTable::parse({}, "x").error, "colour table x: truncated header: 0 bytes, need 16");
 }
 
 TEST_F(ColourTableFile, EveryCorruptionIsNamed) {

@@ -7,8 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -29,9 +33,10 @@ struct ToolRun {
   std::string out;
 };
 
-ToolRun run(const std::string& args) {
+/// Runs ringlet-vision; `out` is stdout, or stdout and stderr with `with_stderr`.
+ToolRun run(const std::string& args, bool with_stderr = false) {
   ToolRun r;
-  const std::string command = std::string(RINGLET_VISION_BIN) + " " + args + " 2>/dev/null";
+  const std::string command = std::string(RINGLET_VISION_BIN) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return r;
   char buffer[4096];
@@ -127,6 +132,73 @@ TEST_F(VisionCli, NoCarpetNoLines) {
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("lines").size(), 0U) << r.out;
   EXPECT_FALSE(j.at("ball").at("seen").get<bool>()) << r.out;
+}
+
+// Bad input exits 2 with a message naming the file or flag, never "internal error" (exit 1).
+
+// A valid PNG signature and IHDR declaring 40000 × 40000 pixels: OpenCV would throw (or allocate
+// gigabytes); the header is checked before the decoder sees it.
+TEST_F(VisionCli, OversizedPngHeaderIsBadInput) {
+  std::vector<std::uint8_t> png{0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A, 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                                0, 0, 0x9C, 0x40, 0, 0, 0x9C, 0x40, 8, 2, 0, 0, 0, 0, 0, 0, 0};
+  const fs::path file = dir_ / "huge.png";
+  std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  const ToolRun r = run(file.string(), true);
+  EXPECT_EQ(r.rc, 2) << r.out;
+  EXPECT_NE(r.out.find("huge.png: not a readable image: PNG image is 40000x40000 = 1600000000 pixels, more than the "
+                       "limit of 16777216"), std::string::npos) << r.out;
+}
+
+// The real frame cut in half: header fine, data missing.
+TEST_F(VisionCli, TruncatedPngIsBadInput) {
+  const std::string bytes = [&] {
+    std::ifstream in(dir_ / "frame.png", std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  const fs::path file = dir_ / "half.png";
+  std::ofstream(file, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  const ToolRun r = run(file.string(), true);
+  EXPECT_EQ(r.rc, 2) << r.out;
+  EXPECT_NE(r.out.find("half.png: not a readable image"), std::string::npos) << r.out;
+}
+
+TEST_F(VisionCli, ImagePathThatIsADirectoryIsBadInput) {
+  const ToolRun r = run(dir_.string(), true);
+  EXPECT_EQ(r.rc, 2) << r.out;
+  EXPECT_NE(r.out.find(dir_.string() + ": cannot read image: not a regular file (a directory)"), std::string::npos) << r.out;
+}
+
+// NaN passes every "x < lo || x > hi" check; each number must be finite and in its documented
+// range, and the message names the flag.
+TEST_F(VisionCli, NonFiniteOrOutOfRangeCameraFlagsAreBadInput) {
+  const std::string png = (dir_ / "frame.png").string();
+  const std::pair<const char*, const char*> cases[] = {
+      {"--pitch nan", "--pitch: must be a finite number, got nan"},
+      {"--pitch 95", "--pitch: must be within [-38.5, 29.5] deg (the NAO's HeadPitch range), got 95"},
+      {"--pitch -40", "--pitch: must be within [-38.5, 29.5]"},
+      {"--yaw 120", "--yaw: must be within [-119.5, 119.5]"},
+      {"--yaw -inf", "--yaw: must be a finite number, got -inf"},
+      {"--fx nan --fy 500", "--fx: must be a finite number, got nan"},
+      {"--fx 500 --fy 0", "--fy: must be within [1, 100000] px, got 0"},
+      {"--hfov nan", "--hfov: must be a finite number"},
+      {"--vfov 180", "--vfov: must be within [1, 179] deg"},
+      {"--pivot-height nan", "--pivot-height: must be a finite number"},
+      {"--camera-forward nan", "--camera-forward: must be a finite number"},
+      {"--camera-up 2", "--camera-up: must be within [-1, 1] m"},
+      {"--cx 9000 --fx 500 --fy 500", "--cx: must be within [0, 4096] px"},
+      {"--cy 700 --fx 500 --fy 500", "--cx/--cy (320, 700) lies outside the 640x480 image"},
+      {"--fy 500", "--fy needs --fx"},
+      {"--pitch abc", "--pitch: not a number: abc"},
+  };
+  for (const auto& [flags, message] : cases) {
+    const ToolRun r = run(png + " " + flags, true);
+    EXPECT_EQ(r.rc, 2) << flags << "\n" << r.out;
+    EXPECT_NE(r.out.find(message), std::string::npos) << flags << "\n" << r.out;
+    EXPECT_EQ(r.out.find("\"status\""), std::string::npos) << flags << ": no result may be printed\n" << r.out;
+  }
+  // The ends of the NAO's range are allowed.
+  EXPECT_EQ(run(png + " --pitch 29.5 --yaw -119.5").rc, 0);
+  EXPECT_EQ(run(png + " --pitch -38.5").rc, 0);
 }
 
 }  // namespace

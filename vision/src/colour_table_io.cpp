@@ -1,8 +1,10 @@
 // The colour table's file: whole or nothing. Every check names the file and what is wrong, and a
 // table is only returned once every byte has been read and verified.
 #include <array>
+#include <cstring>
 #include <fstream>
-#include <iterator>
+
+#include "ringlet/hal/read_file.hpp"
 
 #include "ringlet/vision/colour_table.hpp"
 
@@ -30,14 +32,10 @@ void put_u16(std::array<std::uint8_t, kHeaderSize>& h, std::size_t at, std::uint
 void put_u32(std::array<std::uint8_t, kHeaderSize>& h, std::size_t at, std::uint32_t v) noexcept {
   for (std::size_t k = 0; k < 4; ++k) h[at + k] = static_cast<std::uint8_t>((v >> (8 * k)) & 0xFFU);
 }
-std::uint32_t get_u32(const std::vector<std::uint8_t>& b, std::size_t at) noexcept {
+std::uint32_t get_u32(std::span<const std::uint8_t> b, std::size_t at) noexcept {
   std::uint32_t v = 0;
   for (std::size_t k = 0; k < 4; ++k) v |= static_cast<std::uint32_t>(b[at + k]) << (8 * k);
   return v;
-}
-
-ColourTableLoad fail(const std::filesystem::path& file, const std::string& what) {
-  return {std::nullopt, "colour table " + file.string() + ": " + what};
 }
 
 }  // namespace
@@ -48,7 +46,7 @@ std::uint32_t crc32(std::span<const std::uint8_t> bytes) noexcept {
   return c ^ 0xFFFFFFFFU;
 }
 
-std::string ColourTable::save(const std::filesystem::path& file) const {
+std::vector<std::uint8_t> ColourTable::serialise() const {
   std::array<std::uint8_t, kHeaderSize> h{};
   for (std::size_t k = 0; k < 4; ++k) h[k] = static_cast<std::uint8_t>(kMagic[k]);
   put_u16(h, 4, kFileVersion);
@@ -56,55 +54,72 @@ std::string ColourTable::save(const std::filesystem::path& file) const {
   h[7] = static_cast<std::uint8_t>(kColourClassCount);
   put_u32(h, 8, static_cast<std::uint32_t>(bins_.size()));
   put_u32(h, 12, crc32(bins_));
+  std::vector<std::uint8_t> bytes(kHeaderSize + bins_.size());
+  std::memcpy(bytes.data(), h.data(), kHeaderSize);
+  std::memcpy(bytes.data() + kHeaderSize, bins_.data(), bins_.size());
+  return bytes;
+}
+
+std::string ColourTable::save(const std::filesystem::path& file) const {
+  const std::vector<std::uint8_t> bytes = serialise();
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
   if (!out) return "colour table " + file.string() + ": cannot open for writing";
-  out.write(reinterpret_cast<const char*>(h.data()), static_cast<std::streamsize>(h.size()));
-  out.write(reinterpret_cast<const char*>(bins_.data()), static_cast<std::streamsize>(bins_.size()));
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   out.close();
   if (!out) return "colour table " + file.string() + ": write failed";
   return {};
 }
 
 ColourTableLoad ColourTable::load(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) return fail(file, "no such file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return fail(file, "cannot open for reading");
-  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const hal::FileRead read = hal::read_file(file, "colour table", hal::kMaxBinaryFileBytes);
+  if (!read.ok()) {
+    // read_file says "<file>: cannot read colour table: <why>"; every colour-table error reads
+    // "colour table <file>: <what>", so keep the why.
+    const std::string prefix = file.string() + ": cannot read colour table: ";
+    const bool ours = read.error.rfind(prefix, 0) == 0;
+    return {std::nullopt, "colour table " + file.string() + ": " + (ours ? read.error.substr(prefix.size()) : read.error)};
+  }
+  return parse({reinterpret_cast<const std::uint8_t*>(read.bytes.data()), read.bytes.size()}, file.string());
+}
+
+ColourTableLoad ColourTable::parse(std::span<const std::uint8_t> bytes, std::string_view source) {
+  const auto fail = [&](const std::string& what) {
+    return ColourTableLoad{std::nullopt, "colour table " + std::string(source) + ": " + what};
+  };
   if (bytes.size() < kHeaderSize) {
-    return fail(file, "truncated header: " + std::to_string(bytes.size()) + " bytes, need " + std::to_string(kHeaderSize));
+    return fail("truncated header: " + std::to_string(bytes.size()) + " bytes, need " + std::to_string(kHeaderSize));
   }
   for (std::size_t k = 0; k < 4; ++k) {
-    if (bytes[k] != static_cast<std::uint8_t>(kMagic[k])) return fail(file, "not a colour table (bad magic, expected \"RLUT\")");
+    if (bytes[k] != static_cast<std::uint8_t>(kMagic[k])) return fail("not a colour table (bad magic, expected \"RLUT\")");
   }
   const auto version = static_cast<std::uint16_t>(bytes[4] | (bytes[5] << 8));
   if (version != kFileVersion) {
-    return fail(file, "unsupported version " + std::to_string(version) + " (this build reads version " +
+    return fail("unsupported version " + std::to_string(version) + " (this build reads version " +
                           std::to_string(kFileVersion) + ")");
   }
   const int bits = bytes[6];
   if (bits < kMinBinBits || bits > kMaxBinBits) {
-    return fail(file, "bin bits " + std::to_string(bits) + " out of range [" + std::to_string(kMinBinBits) + ", " +
+    return fail("bin bits " + std::to_string(bits) + " out of range [" + std::to_string(kMinBinBits) + ", " +
                           std::to_string(kMaxBinBits) + "]");
   }
   if (bytes[7] != kColourClassCount) {
-    return fail(file, "class count " + std::to_string(bytes[7]) + ", expected " + std::to_string(kColourClassCount));
+    return fail("class count " + std::to_string(bytes[7]) + ", expected " + std::to_string(kColourClassCount));
   }
   const std::uint32_t entries = get_u32(bytes, 8);
   const std::size_t expected = std::size_t{1} << (3 * bits);
   if (entries != expected) {
-    return fail(file, "entry count " + std::to_string(entries) + " does not match " + std::to_string(bits) +
+    return fail("entry count " + std::to_string(entries) + " does not match " + std::to_string(bits) +
                           " bin bits (" + std::to_string(expected) + ")");
   }
   if (bytes.size() != kHeaderSize + expected) {
-    return fail(file, "size " + std::to_string(bytes.size()) + " bytes, expected " +
+    return fail("size " + std::to_string(bytes.size()) + " bytes, expected " +
                           std::to_string(kHeaderSize + expected) + (bytes.size() < kHeaderSize + expected ? " (truncated)" : " (trailing bytes)"));
   }
   const std::span<const std::uint8_t> payload(bytes.data() + kHeaderSize, expected);
-  if (crc32(payload) != get_u32(bytes, 12)) return fail(file, "CRC mismatch (corrupt entries)");
+  if (crc32(payload) != get_u32(bytes, 12)) return fail("CRC mismatch (corrupt entries)");
   for (std::size_t i = 0; i < payload.size(); ++i) {
     if (payload[i] >= kColourClassCount) {
-      return fail(file, "entry " + std::to_string(i) + " has class " + std::to_string(payload[i]) + " >= class count");
+      return fail("entry " + std::to_string(i) + " has class " + std::to_string(payload[i]) + " >= class count");
     }
   }
   ColourTable table(bits);

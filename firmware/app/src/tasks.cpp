@@ -17,7 +17,7 @@ wb::LaserSummary summarize(const hal::LaserScan& scan) noexcept {
   for (std::size_t i = 0; i < scan.beam_count; ++i) {
     if (!scan.valid[i]) continue;
     ++s.valid_beams;
-    const double range = scan.range[i];
+    const double range = static_cast<double>(scan.range[i]);
     if (range < s.nearest_range) {
       s.nearest_range = range;
       s.nearest_bearing = -scan.beam_angle(i);

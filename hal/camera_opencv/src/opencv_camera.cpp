@@ -5,13 +5,18 @@
 #include <atomic>
 #include <chrono>
 #include <cstring>
+#include <iostream>
 #include <mutex>
+#include <span>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "ringlet/hal/image_header.hpp"
+#include "ringlet/hal/read_file.hpp"
 #include "ringlet/hal/yuv.hpp"
 
 namespace ringlet::hal {
@@ -32,6 +37,37 @@ std::vector<std::filesystem::path> image_files(const std::filesystem::path& fold
   }
   std::sort(files.begin(), files.end());
   return files;
+}
+
+/// An image file as BGR (empty, with `why` naming the file, when it cannot be read or decoded):
+/// bounded read, header check, then OpenCV, whose exceptions become `why` too.
+cv::Mat decode_image_file(const std::filesystem::path& path, std::string& why) {
+  const FileRead read = read_file(path, "image", kMaxBinaryFileBytes);
+  if (!read.ok()) {
+    why = read.error;
+    return {};
+  }
+  const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(read.bytes.data()), read.bytes.size());
+  const ImageProbe probe = probe_image(bytes);
+  if (!probe.ok()) {
+    why = path.filename().string() + ": cannot decode image: " + probe.error;
+    return {};
+  }
+  cv::Mat bgr;
+  try {
+    // imdecode only reads the buffer (the const_cast is its C-style API).
+    bgr = cv::imdecode(cv::Mat(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<std::uint8_t*>(bytes.data())),
+                       cv::IMREAD_COLOR);
+  } catch (const cv::Exception& e) {
+    why = path.filename().string() + ": cannot decode image: the " + to_string(probe.header->format) +
+          " decoder failed (" + e.err + ")";
+    return {};
+  }
+  if (bgr.empty()) {
+    why = path.filename().string() + ": cannot decode image: corrupt or truncated " + to_string(probe.header->format) +
+          " data";
+  }
+  return bgr;
 }
 
 int bytes_per_pixel(PixelFormat f) { return f == PixelFormat::kBgr8 ? 3 : (f == PixelFormat::kYuyv ? 2 : 1); }
@@ -65,6 +101,7 @@ class TripleBuffer {
 struct OpenCvCamera::Impl {
   OpenCvCameraConfig config;
   const Clock& clock;
+  CameraWarningSink warn_sink;
   bool replay = false;
   cv::VideoCapture capture;                    // devices and video files
   std::vector<std::filesystem::path> images;   // image folders
@@ -79,28 +116,80 @@ struct OpenCvCamera::Impl {
   std::atomic<bool> source_done{false};
   mutable std::mutex error_mutex;  // error text only; never taken by grab_latest
   std::string error;
+  std::atomic<std::size_t> undecodable{0};
+  std::string first_undecodable;  // capture thread only
   std::thread thread;
 
-  Impl(const OpenCvCameraConfig& c, const Clock& k) : config(c), clock(k) {}
+  /// Per-file warnings before the rest are only counted (and summed up at the end).
+  static constexpr std::size_t kNamedWarnings = 10;
+
+  Impl(const OpenCvCameraConfig& c, const Clock& k, CameraWarningSink w) : config(c), clock(k), warn_sink(std::move(w)) {}
 
   void fail(const std::string& what) {
     const std::lock_guard lock(error_mutex);
     if (error.empty()) error = config.source + ": " + what;
   }
 
-  // Reads the next frame of the source as BGR; false at the end or on error.
+  void warn(const std::string& what) const {
+    const std::string line = config.source + ": " + what;
+    if (warn_sink) {
+      warn_sink(line);
+    } else {
+      std::cerr << "ringlet camera: warning: " + line + "\n" << std::flush;
+    }
+  }
+
+  void skipped(const std::string& why) {
+    const std::size_t n = undecodable.fetch_add(1, std::memory_order_relaxed) + 1;
+    if (n == 1) first_undecodable = why;
+    if (n <= kNamedWarnings) warn(why + "; skipped");
+    if (n == kNamedWarnings) warn("further undecodable files are skipped and counted without a warning each");
+  }
+
+  void replay_summary() const {
+    const std::size_t n = undecodable.load(std::memory_order_relaxed);
+    if (n == 0) return;
+    warn("replay ended: " + std::to_string(n) + " of " + std::to_string(images.size()) +
+         " image files could not be decoded and were skipped (the first: " + first_undecodable + ")");
+  }
+
+  // Reads the next frame of the source as BGR; false at the end or on error. Image folders skip
+  // files that cannot be decoded (counted and reported).
   bool next(cv::Mat& bgr, std::size_t& image_index) {
     if (!images.empty()) {
-      if (image_index >= images.size()) return false;
-      const auto& path = images[image_index++];
-      bgr = cv::imread(path.string(), cv::IMREAD_COLOR);
-      if (bgr.empty()) {
-        fail(path.filename().string() + ": cannot decode image");
-        return false;
+      while (image_index < images.size()) {
+        std::string why;
+        bgr = decode_image_file(images[image_index++], why);
+        if (!bgr.empty()) return true;
+        skipped(why);
+        if (stop.load(std::memory_order_relaxed)) return false;
       }
-      return true;
+      replay_summary();
+      return false;
     }
     return capture.read(bgr) && !bgr.empty();
+  }
+
+  /// Start-up check of an image folder: some file must decode, and the first that does must
+  /// have the configured size. The replay itself starts from the first file again.
+  void check_folder() const {
+    std::string first_why;
+    for (const auto& path : images) {
+      std::string why;
+      const cv::Mat bgr = decode_image_file(path, why);
+      if (bgr.empty()) {
+        if (first_why.empty()) first_why = why;
+        continue;
+      }
+      if (bgr.cols != config.width || bgr.rows != config.height) {
+        throw CameraError(config.source + ": " + path.filename().string() + " is " + std::to_string(bgr.cols) + "x" +
+                          std::to_string(bgr.rows) + ", expected " + std::to_string(config.width) + "x" +
+                          std::to_string(config.height));
+      }
+      return;
+    }
+    throw CameraError(config.source + ": none of the " + std::to_string(images.size()) +
+                      " image files can be decoded (the first: " + first_why + ")");
   }
 
   void store(const cv::Mat& bgr, unsigned slot) {
@@ -143,8 +232,8 @@ struct OpenCvCamera::Impl {
   }
 };
 
-OpenCvCamera::OpenCvCamera(const OpenCvCameraConfig& config, const Clock& clock)
-    : impl_(std::make_unique<Impl>(config, clock)) {
+OpenCvCamera::OpenCvCamera(const OpenCvCameraConfig& config, const Clock& clock, CameraWarningSink warn)
+    : impl_(std::make_unique<Impl>(config, clock, std::move(warn))) {
   auto& d = *impl_;
   if (config.width <= 0 || config.height <= 0 || config.width % 2 != 0) {
     throw CameraError(config.source + ": frame size must be positive with an even width, got " +
@@ -166,6 +255,7 @@ OpenCvCamera::OpenCvCamera(const OpenCvCameraConfig& config, const Clock& clock)
     d.replay = true;
     d.images = image_files(config.source);
     if (d.images.empty()) throw CameraError(config.source + ": no .png, .jpg or .jpeg images in the folder");
+    d.check_folder();
   } else {
     d.replay = true;
     if (!std::filesystem::exists(config.source)) throw CameraError(config.source + ": no such file or folder");
@@ -204,6 +294,10 @@ bool OpenCvCamera::finished() const noexcept {
 std::string OpenCvCamera::error() const {
   const std::lock_guard lock(impl_->error_mutex);
   return impl_->error;
+}
+
+std::size_t OpenCvCamera::undecodable_files() const noexcept {
+  return impl_->undecodable.load(std::memory_order_relaxed);
 }
 
 }  // namespace ringlet::hal

@@ -24,6 +24,7 @@ Json frame_json(const FrameRecord& record, const CameraRenderer& renderer) {
   j["image"] = record.image;
   j["format"] = record.format;
   j["seed"] = record.seed;
+  j["generator_version"] = record.generator_version;
   j["world"] = world.name;
   j["pose"] = {{"x", truth.pose.x}, {"y", truth.pose.y}, {"theta", truth.pose.theta}};
   j["head"] = {{"yaw", truth.head.yaw}, {"pitch", truth.head.pitch}};

@@ -13,6 +13,7 @@ struct FrameRecord {
   std::string image;      // file name of the picture, next to the JSON file
   std::string format;     // "png" (BGR) or "yuyv" (raw YUYV bytes)
   std::uint64_t seed = 0;
+  int generator_version = 0;      // ringlet-dataset's: the same (version, seed, index) is the same frame
   std::vector<Circle> occluders;  // robots added to the world for this frame only
 };
 

@@ -1,28 +1,41 @@
 // ringlet-dataset: N rendered head-camera frames of a world, each a picture and a JSON file with
 // its ground truth, from random robot poses and head angles, with varied sun stripes and, for
-// some frames, robots standing close to the camera. Deterministic for a seed. Unless --no-labels,
-// also frame_NNNN_labels.png: per pixel the vision ColourClass of what the renderer drew there,
-// the labelled examples ringlet-vision-calibrate builds and evaluates colour tables from.
+// some frames, robots standing close to the camera. Unless --no-labels, also
+// frame_NNNN_labels.png: per pixel the vision ColourClass of what the renderer drew there, the
+// labelled examples ringlet-vision-calibrate builds and evaluates colour tables from.
 //
-// Exit codes: 0 done · 2 bad input (flags, world file) · 1 cannot write the output.
+// Each frame is a pure function of (seed, frame index) and the options: it draws from its own
+// random stream, so `--first K -n N` writes frames K..K+N-1 exactly as a longer run would, and
+// sets with different seeds, or the same seed and disjoint index ranges, share no frame. That is
+// what makes honest tuning/test splits possible (ringlet-vision-eval checks them). The folder's
+// manifest.json records the generator, the seed, the options and the index ranges written.
+//
+// Exit codes: 0 done · 2 bad input (flags, world file, a world with no free pose, a folder that
+// holds a different dataset) · 1 cannot write the output.
 #include <CLI/CLI.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <unistd.h>
 #include <vector>
 
 #include "dataset_json.hpp"
 #include "ringlet/sim/camera_renderer.hpp"
 #include "ringlet/sim/collision.hpp"
+#include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/hal/read_file.hpp"
 #include "ringlet/hal/yuv.hpp"
 #include "ringlet/vision/colour.hpp"
 
@@ -30,6 +43,32 @@ namespace {
 
 using namespace ringlet;
 using namespace ringlet::sim;
+
+/// Bumped whenever the frames a (seed, index) gives change: frames of different generator
+/// versions are different frames. 1: one stream for the whole run (a run was a prefix of any
+/// longer one). 2: one stream per frame.
+constexpr int kGeneratorVersion = 2;
+
+/// Random poses tried before a world is declared to have no free pose.
+constexpr int kMaxPoseTries = 100000;
+
+class DatasetError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// SplitMix64's finaliser: a bijection on 64 bits that spreads every input bit.
+std::uint64_t mix64(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ULL;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+  return x ^ (x >> 31);
+}
+
+/// The seed of frame `index`'s own random stream, and of its renderer (texture noise): distinct
+/// for every (seed, index), unlike seed + index, where seed 1 frame 1 was seed 2 frame 0.
+std::uint64_t frame_stream(std::uint64_t seed, std::uint64_t index) { return mix64(mix64(seed) ^ mix64(index ^ 0x5EED5EEDULL)); }
+std::uint64_t render_seed(std::uint64_t seed, std::uint64_t index) { return mix64(frame_stream(seed, index) ^ 0xC0FFEEULL); }
 
 /// Uniform in [lo, hi) from the raw engine output: std::uniform_real_distribution is not
 /// specified bit-for-bit, so datasets would differ between standard libraries.
@@ -48,13 +87,14 @@ class Uniform {
 struct Options {
   std::string world = RINGLET_DEFAULT_WORLD;
   int count = 100;
+  int first = 0;
   std::uint64_t seed = 1;
   std::string out = "dataset";
   std::string format = "png";
   double occluded_share = 0.3;
   double max_yaw_deg = 60.0;
   double min_pitch_deg = 8.0;
-  double max_pitch_deg = 32.0;
+  double max_pitch_deg = 29.5;  // the NAO's HeadPitch limit (hal::NaoHeadRange)
   bool quiet = false;
   bool labels = true;
 };
@@ -84,12 +124,16 @@ std::string labels_name(int index) {
 }
 
 /// A pose inside the bounds (0.3 m from the walls) where a robot of radius 0.25 stands free.
-hal::Pose2 random_pose(const World& world, Uniform& rnd) {
-  for (;;) {
+/// DatasetError naming the world when none is found in kMaxPoseTries draws.
+hal::Pose2 random_pose(const World& world, const std::string& world_file, Uniform& rnd) {
+  for (int i = 0; i < kMaxPoseTries; ++i) {
     const hal::Pose2 p{rnd(world.min.x + 0.3, world.max.x - 0.3), rnd(world.min.y + 0.3, world.max.y - 0.3),
                        rnd(-std::numbers::pi, std::numbers::pi)};
     if (!disc_collides(world, Vec2{p.x, p.y}, 0.25)) return p;
   }
+  throw DatasetError(world_file + ": no free pose for the camera robot (a 0.25 m disc, 0.3 m inside the bounds) in " +
+                     std::to_string(kMaxPoseTries) + " random tries: world \"" + world.name +
+                     "\" is too small or full of obstacles");
 }
 
 /// One or two robots 0.5–1.6 m in front of the camera, inside ±25° of where it looks.
@@ -127,6 +171,62 @@ std::string frame_name(int index, const char* extension) {
   return buffer;
 }
 
+/// What decides the frames besides their index: equal generations give equal frames.
+nlohmann::ordered_json generation(const Options& o, const World& world) {
+  return {{"generator", "ringlet-dataset"}, {"generator_version", kGeneratorVersion},
+          {"world_file", o.world},         {"world", world.name},
+          {"seed", o.seed},                {"format", o.format},
+          {"occluded", o.occluded_share},  {"max_yaw_deg", o.max_yaw_deg},
+          {"min_pitch_deg", o.min_pitch_deg}, {"max_pitch_deg", o.max_pitch_deg}};
+}
+
+/// The index ranges [a, b) already in the folder's manifest (none without one). DatasetError when
+/// the folder holds frames of another generation (or frames without a manifest): mixing them
+/// would make the folder's identity a lie.
+std::vector<std::pair<std::int64_t, std::int64_t>> existing_ranges(const std::filesystem::path& out,
+                                                                    const nlohmann::ordered_json& gen) {
+  std::vector<std::pair<std::int64_t, std::int64_t>> ranges;
+  const std::filesystem::path manifest = out / "manifest.json";
+  std::error_code ec;
+  if (!std::filesystem::exists(manifest, ec)) {
+    for (const auto& e : std::filesystem::directory_iterator(out, ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind("frame_", 0) == 0 && e.path().extension() == ".json") {
+        throw DatasetError(out.string() + ": holds frames without a manifest.json (an older ringlet-dataset); write "
+                           "to another folder");
+      }
+    }
+    return ranges;
+  }
+  const hal::FileRead read = hal::read_file(manifest, "dataset manifest");
+  if (!read.ok()) throw DatasetError(read.error);
+  try {
+    const auto j = nlohmann::ordered_json::parse(read.bytes);
+    if (j.at("generation") != gen) {
+      throw DatasetError(manifest.string() + ": the folder holds a different dataset (" + j.at("generation").dump() +
+                         "); write to another folder");
+    }
+    for (const auto& r : j.at("ranges")) ranges.emplace_back(r.at(0).get<std::int64_t>(), r.at(1).get<std::int64_t>());
+  } catch (const nlohmann::json::exception& e) {
+    throw DatasetError(manifest.string() + ": not a ringlet-dataset manifest: " + e.what());
+  }
+  return ranges;
+}
+
+/// Sorted, overlapping or touching ranges joined.
+std::vector<std::pair<std::int64_t, std::int64_t>> merge_ranges(std::vector<std::pair<std::int64_t, std::int64_t>> r) {
+  std::sort(r.begin(), r.end());
+  std::vector<std::pair<std::int64_t, std::int64_t>> out;
+  for (const auto& x : r) {
+    if (!out.empty() && x.first <= out.back().second) {
+      out.back().second = std::max(out.back().second, x.second);
+    } else {
+      out.push_back(x);
+    }
+  }
+  return out;
+}
+
 void progress(const Options& o, int done) {
   if (o.quiet) return;
   static const bool tty = isatty(fileno(stderr)) != 0;
@@ -146,6 +246,11 @@ int run(const Options& o) {
     std::cerr << "ringlet-dataset: " << e.what() << "\n";
     return 2;
   }
+  {
+    // A world without a free pose is refused before the output folder is created.
+    Uniform probe(frame_stream(o.seed, static_cast<std::uint64_t>(o.first)));
+    (void)random_pose(world, o.world, probe);
+  }
   const std::filesystem::path out(o.out);
   std::error_code ec;
   std::filesystem::create_directories(out, ec);
@@ -153,15 +258,18 @@ int run(const Options& o) {
     std::cerr << "ringlet-dataset: " << o.out << ": cannot create directory: " << ec.message() << "\n";
     return 1;
   }
+  const nlohmann::ordered_json gen = generation(o, world);
+  auto ranges = existing_ranges(out, gen);
 
   const CameraSpec spec{};  // the NAO's camera: 640×480, 57°×44°
   const hal::CameraIntrinsics& k = spec.intrinsics;
-  Uniform rnd(o.seed);
   std::vector<std::uint8_t> yuyv(static_cast<std::size_t>(k.width) * static_cast<std::size_t>(k.height) * 2U);
   cv::Mat classes(k.height, k.width, CV_8UC1);
 
-  for (int i = 0; i < o.count; ++i) {
-    const hal::Pose2 pose = random_pose(world, rnd);
+  for (int n = 0; n < o.count; ++n) {
+    const int i = o.first + n;
+    Uniform rnd(frame_stream(o.seed, static_cast<std::uint64_t>(i)));
+    const hal::Pose2 pose = random_pose(world, o.world, rnd);
     const hal::HeadJoints head{hal::deg_to_rad(rnd(-o.max_yaw_deg, o.max_yaw_deg)),
                                hal::deg_to_rad(rnd(o.min_pitch_deg, o.max_pitch_deg))};
     World scene = world;
@@ -169,11 +277,12 @@ int run(const Options& o) {
     dataset::FrameRecord record;
     record.index = i;
     record.seed = o.seed;
+    record.generator_version = kGeneratorVersion;
     record.format = o.format;
     if (rnd(0.0, 1.0) < o.occluded_share) record.occluders = random_occluders(pose, head.yaw, rnd);
     scene.circles.insert(scene.circles.end(), record.occluders.begin(), record.occluders.end());
 
-    CameraRenderer renderer(std::move(scene), spec, o.seed + static_cast<std::uint64_t>(i));
+    CameraRenderer renderer(std::move(scene), spec, render_seed(o.seed, static_cast<std::uint64_t>(i)));
     renderer.render(pose, head);
 
     const auto bgr = renderer.bgr();
@@ -211,10 +320,22 @@ int run(const Options& o) {
       std::cerr << "ringlet-dataset: " << json_path.string() << ": cannot write\n";
       return 1;
     }
-    progress(o, i + 1);
+    progress(o, n + 1);
   }
-  std::cout << "ringlet-dataset: wrote " << o.count << " frames (" << o.format << " + json" << (o.labels ? " + labels" : "")
-            << ") to " << o.out << "\n";
+  ranges.emplace_back(o.first, static_cast<std::int64_t>(o.first) + o.count);
+  ranges = merge_ranges(std::move(ranges));
+  nlohmann::ordered_json manifest{{"generation", gen}, {"ranges", nlohmann::ordered_json::array()}};
+  for (const auto& [a, b] : ranges) manifest["ranges"].push_back({a, b});
+  manifest["note"] = "frame i is a pure function of the generation and i; ranges are [first, end) of the frames written";
+  const std::filesystem::path manifest_path = out / "manifest.json";
+  std::ofstream manifest_file(manifest_path);
+  manifest_file << manifest.dump(2) << "\n";
+  if (!manifest_file) {
+    std::cerr << "ringlet-dataset: " << manifest_path.string() << ": cannot write\n";
+    return 1;
+  }
+  std::cout << "ringlet-dataset: wrote frames " << o.first << ".." << o.first + o.count - 1 << " (seed " << o.seed
+            << ", " << o.format << " + json" << (o.labels ? " + labels" : "") << ") to " << o.out << "\n";
   return 0;
 }
 
@@ -227,7 +348,11 @@ int main(int argc, char** argv) {
                "lighting and nearby robots. Exit codes: 0 done, 2 bad input, 1 cannot write."};
   app.add_option("-w,--world", o.world, "world file")->capture_default_str();
   app.add_option("-n,--count", o.count, "number of frames")->capture_default_str()->check(CLI::Range(1, 1000000));
-  app.add_option("-s,--seed", o.seed, "seed: the same seed gives the same dataset")->capture_default_str();
+  app.add_option("--first", o.first, "index of the first frame: frames first..first+count-1 are written, each exactly "
+                                     "as any other run with this seed writes it")
+      ->capture_default_str()->check(CLI::Range(0, 1000000));
+  app.add_option("-s,--seed", o.seed, "seed: frame i of a seed is always the same frame; other seeds share no frame")
+      ->capture_default_str();
   app.add_option("-o,--out", o.out, "output directory (created if missing)")->capture_default_str();
   app.add_option("-f,--format", o.format, "png (BGR picture) or yuyv (raw NAO-style bytes)")
       ->capture_default_str()
@@ -235,9 +360,13 @@ int main(int argc, char** argv) {
   app.add_option("--occluded", o.occluded_share, "share of frames with robots close to the camera")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
-  app.add_option("--max-yaw", o.max_yaw_deg, "head yaw range ±deg")->capture_default_str()->check(CLI::Range(0.0, 119.0));
-  app.add_option("--min-pitch", o.min_pitch_deg, "lowest head pitch, deg (down positive)")->capture_default_str();
-  app.add_option("--max-pitch", o.max_pitch_deg, "highest head pitch, deg")->capture_default_str();
+  using Head = hal::NaoHeadRange;
+  app.add_option("--max-yaw", o.max_yaw_deg, "head yaw range ±deg (within the NAO's)")
+      ->capture_default_str()->check(CLI::Range(0.0, Head::kMaxYawDeg));
+  app.add_option("--min-pitch", o.min_pitch_deg, "lowest head pitch, deg (down positive; within the NAO's range)")
+      ->capture_default_str()->check(CLI::Range(Head::kMinPitchDeg, Head::kMaxPitchDeg));
+  app.add_option("--max-pitch", o.max_pitch_deg, "highest head pitch, deg")
+      ->capture_default_str()->check(CLI::Range(Head::kMinPitchDeg, Head::kMaxPitchDeg));
   app.add_flag("-q,--quiet", o.quiet, "no progress output");
   app.add_flag("!--no-labels", o.labels,
                "do not write frame_NNNN_labels.png (8-bit, per pixel the colour class: 0 other, 1 field, 2 line, 3 ball)");
@@ -251,8 +380,15 @@ int main(int argc, char** argv) {
     std::cerr << "ringlet-dataset: --min-pitch must be <= --max-pitch\n";
     return 2;
   }
+  if (static_cast<std::int64_t>(o.first) + o.count > 10000000) {
+    std::cerr << "ringlet-dataset: --first + --count must stay below 10000000\n";
+    return 2;
+  }
   try {
     return run(o);
+  } catch (const DatasetError& e) {
+    std::cerr << "ringlet-dataset: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "ringlet-dataset: internal error: " << e.what() << "\n";
     return 1;

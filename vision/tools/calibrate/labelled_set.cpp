@@ -39,8 +39,7 @@ std::vector<LabelledImage> find_labelled_images(const fs::path& dir) {
 
 void sample_labelled_image(const LabelledImage& image, int stride, std::vector<LabelledSample>& out) {
   const cv::Mat bgr = load_bgr(image.picture);
-  const cv::Mat labels = cv::imread(image.labels.string(), cv::IMREAD_UNCHANGED);
-  if (labels.empty()) throw ToolError(image.labels.string() + ": not a readable image");
+  const cv::Mat labels = load_image(image.labels, cv::IMREAD_UNCHANGED);
   if (labels.type() != CV_8UC1) throw ToolError(image.labels.string() + ": not an 8-bit single-channel label image");
   if (labels.cols != bgr.cols || labels.rows != bgr.rows) {
     throw ToolError(image.labels.string() + ": " + std::to_string(labels.cols) + "x" + std::to_string(labels.rows) +

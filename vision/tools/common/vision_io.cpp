@@ -3,16 +3,51 @@
 #include <cmath>
 #include <iostream>
 #include <numbers>
+#include <sstream>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/hal/image_header.hpp"
+#include "ringlet/hal/read_file.hpp"
+
 namespace ringlet::vision::tools {
 
+cv::Mat decode_image(std::span<const std::uint8_t> bytes, const std::string& source, int imread_flags,
+                     std::size_t max_pixels) {
+  // The header first: a decoder allocates what the header declares before it reads a pixel.
+  const hal::ImageProbe probe = hal::probe_image(bytes, max_pixels);
+  if (!probe.ok()) throw ToolError(source + ": not a readable image: " + probe.error);
+  cv::Mat bgr;
+  try {
+    // imdecode wants a Mat; it only reads the buffer (the const_cast is its C-style API).
+    const cv::Mat raw(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<std::uint8_t*>(bytes.data()));
+    bgr = cv::imdecode(raw, imread_flags);
+  } catch (const cv::Exception& e) {
+    throw ToolError(source + ": not a readable image: the " + std::string(hal::to_string(probe.header->format)) +
+                    " decoder failed (" + e.err + ")");
+  }
+  if (bgr.empty() || (imread_flags == cv::IMREAD_COLOR && bgr.type() != CV_8UC3)) {
+    throw ToolError(source + ": not a readable image: the " + std::string(hal::to_string(probe.header->format)) +
+                    " data is corrupt or truncated");
+  }
+  return bgr;
+}
+
+cv::Mat decode_bgr(std::span<const std::uint8_t> bytes, const std::string& source, std::size_t max_pixels) {
+  return decode_image(bytes, source, cv::IMREAD_COLOR, max_pixels);
+}
+
+cv::Mat load_image(const std::filesystem::path& file, int imread_flags) {
+  const hal::FileRead read = hal::read_file(file, "image", hal::kMaxBinaryFileBytes);
+  if (!read.ok()) throw ToolError(read.error);
+  return decode_image({reinterpret_cast<const std::uint8_t*>(read.bytes.data()), read.bytes.size()}, file.string(),
+                      imread_flags);
+}
+
 cv::Mat load_bgr(const std::filesystem::path& file, int width, int height) {
-  if (!std::filesystem::exists(file)) throw ToolError(file.string() + ": no such file");
-  cv::Mat bgr = cv::imread(file.string(), cv::IMREAD_COLOR);
-  if (bgr.empty()) throw ToolError(file.string() + ": not a readable image (PNG, JPEG, ...)");
+  cv::Mat bgr = load_image(file, cv::IMREAD_COLOR);
   if (width > 0 && (bgr.cols != width || bgr.rows != height)) {
     throw ToolError(file.string() + ": image is " + std::to_string(bgr.cols) + "x" + std::to_string(bgr.rows) +
                     ", the camera is " + std::to_string(width) + "x" + std::to_string(height) +
@@ -39,24 +74,56 @@ ColourTable load_table(const std::filesystem::path& file) {
   return std::move(*loaded.table);
 }
 
+CLI::Validator finite_range(double lo, double hi, const std::string& unit) {
+  return CLI::Validator(
+      [lo, hi, unit](const std::string& text) -> std::string {
+        double v = 0.0;
+        std::size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          return "not a number: " + text;
+        }
+        if (used != text.size()) return "not a number: " + text;
+        if (!std::isfinite(v)) return "must be a finite number, got " + text;
+        if (v < lo || v > hi) {
+          return "must be within [" + fmt_number(lo) + ", " + fmt_number(hi) + "]" + (unit.empty() ? "" : " " + unit) +
+                 ", got " + text;
+        }
+        return {};
+      },
+      "FINITE in [" + fmt_number(lo) + ", " + fmt_number(hi) + "]");
+}
+
+std::string fmt_number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
 void CameraOptions::add_to(CLI::App& app, bool with_head) {
-  app.add_option("--width", width, "image width the camera delivers (px)")->capture_default_str()->check(CLI::Range(2, 8192));
-  app.add_option("--height", height, "image height (px)")->capture_default_str()->check(CLI::Range(2, 8192));
+  app.add_option("--width", width, "image width the camera delivers (px)")->capture_default_str()->check(CLI::Range(2, 4096));
+  app.add_option("--height", height, "image height (px)")->capture_default_str()->check(CLI::Range(2, 4096));
   app.add_option("--hfov", hfov_deg, "horizontal field of view (deg), used when --fx is not given")
-      ->capture_default_str()->check(CLI::Range(1.0, 179.0));
-  app.add_option("--vfov", vfov_deg, "vertical field of view (deg)")->capture_default_str()->check(CLI::Range(1.0, 179.0));
+      ->capture_default_str()->check(finite_range(1.0, 179.0, "deg"));
+  app.add_option("--vfov", vfov_deg, "vertical field of view (deg)")->capture_default_str()->check(finite_range(1.0, 179.0, "deg"));
   app.add_option("--fx", fx, "focal length x (px); with --fy, --cx, --cy instead of the fields of view")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--fy", fy, "focal length y (px)")->check(CLI::PositiveNumber);
-  app.add_option("--cx", cx, "principal point x (px)");
-  app.add_option("--cy", cy, "principal point y (px)");
+      ->check(finite_range(1.0, 1e5, "px"));
+  app.add_option("--fy", fy, "focal length y (px)")->check(finite_range(1.0, 1e5, "px"));
+  app.add_option("--cx", cx, "principal point x (px), inside the image")->check(finite_range(0.0, 4096.0, "px"));
+  app.add_option("--cy", cy, "principal point y (px), inside the image")->check(finite_range(0.0, 4096.0, "px"));
   app.add_option("--pivot-height", mount.pivot_height, "height of the head's pan-tilt pivot above the ground (m)")
-      ->capture_default_str()->check(CLI::Range(0.01, 10.0));
-  app.add_option("--camera-forward", mount.forward, "camera ahead of the pivot (m)")->capture_default_str();
-  app.add_option("--camera-up", mount.up, "camera above the pivot (m)")->capture_default_str();
+      ->capture_default_str()->check(finite_range(0.01, 10.0, "m"));
+  app.add_option("--camera-forward", mount.forward, "camera ahead of the pivot (m)")
+      ->capture_default_str()->check(finite_range(-1.0, 1.0, "m"));
+  app.add_option("--camera-up", mount.up, "camera above the pivot (m)")
+      ->capture_default_str()->check(finite_range(-1.0, 1.0, "m"));
   if (with_head) {
-    app.add_option("--yaw", yaw_deg, "head yaw when the image was taken (deg, left positive)")->capture_default_str();
-    app.add_option("--pitch", pitch_deg, "head pitch (deg, down positive)")->capture_default_str();
+    using R = hal::NaoHeadRange;
+    app.add_option("--yaw", yaw_deg, "head yaw when the image was taken (deg, left positive; the NAO's range)")
+        ->capture_default_str()->check(finite_range(-R::kMaxYawDeg, R::kMaxYawDeg, "deg (the NAO's HeadYaw range)"));
+    app.add_option("--pitch", pitch_deg, "head pitch (deg, down positive; the NAO's range)")
+        ->capture_default_str()->check(finite_range(R::kMinPitchDeg, R::kMaxPitchDeg, "deg (the NAO's HeadPitch range)"));
   }
 }
 
@@ -68,6 +135,12 @@ hal::CameraIntrinsics CameraOptions::intrinsics() const {
     k.fy = fy;
     k.cx = cx > 0.0 ? cx : width / 2.0;
     k.cy = cy > 0.0 ? cy : height / 2.0;
+  } else if (fy > 0.0) {
+    throw ToolError("--fy needs --fx (and --cx, --cy)");
+  }
+  if (k.cx > width || k.cy > height) {
+    throw ToolError("--cx/--cy (" + fmt_number(k.cx) + ", " + fmt_number(k.cy) + ") lies outside the " +
+                    std::to_string(width) + "x" + std::to_string(height) + " image");
   }
   return k;
 }

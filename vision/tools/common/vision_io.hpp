@@ -3,6 +3,7 @@
 // result as JSON and drawn over the image, and the camera options every tool takes.
 #include <filesystem>
 #include <functional>
+#include <span>
 #include <string_view>
 #include <stdexcept>
 #include <string>
@@ -12,6 +13,7 @@
 #include <opencv2/core.hpp>
 
 #include "ringlet/hal/camera.hpp"
+#include "ringlet/hal/image_header.hpp"
 #include "ringlet/vision/colour_table.hpp"
 #include "ringlet/vision/pipeline.hpp"
 
@@ -22,7 +24,20 @@ class ToolError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A colour image file (PNG, JPEG, ...) as BGR; ToolError naming the file when it cannot be read
+/// The bytes of a PNG or JPEG file as BGR, as every vision tool decodes images: the header is
+/// checked first (hal::probe_image: PNG or JPEG, at most `max_pixels`), then OpenCV decodes it.
+/// ToolError "<source>: not a readable image: <why>" for anything else (OpenCV's exceptions
+/// included).
+[[nodiscard]] cv::Mat decode_bgr(std::span<const std::uint8_t> bytes, const std::string& source,
+                                 std::size_t max_pixels = hal::kMaxImagePixels);
+/// The same with other cv::imread flags (IMREAD_UNCHANGED for label images).
+[[nodiscard]] cv::Mat decode_image(std::span<const std::uint8_t> bytes, const std::string& source, int imread_flags,
+                                   std::size_t max_pixels = hal::kMaxImagePixels);
+/// A PNG or JPEG file read with hal::read_file and decoded by decode_image.
+[[nodiscard]] cv::Mat load_image(const std::filesystem::path& file, int imread_flags);
+
+/// A PNG or JPEG file as BGR: read with hal::read_file (regular files, at most
+/// hal::kMaxBinaryFileBytes), then decode_bgr. ToolError naming the file when it cannot be read
 /// or decoded, or (when width > 0) is not width × height.
 [[nodiscard]] cv::Mat load_bgr(const std::filesystem::path& file, int width = 0, int height = 0);
 
@@ -34,7 +49,9 @@ class ToolError : public std::runtime_error {
 [[nodiscard]] ColourTable load_table(const std::filesystem::path& file);
 
 /// Camera and head options shared by the tools: image size, field of view (or fx/fy/cx/cy),
-/// mount, head yaw and pitch (degrees).
+/// mount, head yaw and pitch (degrees). Every number must be finite and in its range (the
+/// --help text shows each range; yaw and pitch are the NAO's joint ranges, hal::NaoHeadRange),
+/// else the tool exits 2 naming the flag.
 struct CameraOptions {
   int width = 640;
   int height = 480;
@@ -49,6 +66,14 @@ struct CameraOptions {
   [[nodiscard]] hal::CameraIntrinsics intrinsics() const;
   [[nodiscard]] hal::HeadJoints head() const;
 };
+
+/// A CLI11 check: a finite number in [lo, hi] (`unit` follows the range in the message).
+/// CLI11's Range lets NaN through (every comparison with NaN is false), and a NaN pitch or focal
+/// length would make the pipeline's geometry NaN.
+[[nodiscard]] CLI::Validator finite_range(double lo, double hi, const std::string& unit);
+
+/// A number as text ("29.5", "100000").
+[[nodiscard]] std::string fmt_number(double v);
 
 [[nodiscard]] nlohmann::json result_json(const VisionResult& result);
 

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+
+#include "ringlet/hal/read_file.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -23,7 +24,10 @@ std::vector<fs::path> list_dataset_frames(const fs::path& dir) {
   }
   if (ec) throw ToolError(dir.string() + ": cannot list: " + ec.message());
   if (out.empty()) throw ToolError(dir.string() + ": no frame_*.json files (a folder written by ringlet-dataset)");
-  std::sort(out.begin(), out.end());
+  std::sort(out.begin(), out.end(), [](const fs::path& a, const fs::path& b) {
+    const std::string x = a.filename().string(), y = b.filename().string();
+    return x.size() != y.size() ? x.size() < y.size() : x < y;
+  });
   return out;
 }
 
@@ -37,12 +41,12 @@ double projected_half_width(const hal::CameraIntrinsics& k, const hal::CameraPos
 }
 
 DatasetFrame load_dataset_frame(const fs::path& json_path) {
-  std::ifstream file(json_path);
-  if (!file) throw ToolError(json_path.string() + ": cannot read");
+  const hal::FileRead file = hal::read_file(json_path, "dataset frame record");
+  if (!file.ok()) throw ToolError(file.error);
   DatasetFrame f;
   f.json = json_path;
   try {
-    const nlohmann::json j = nlohmann::json::parse(file);
+    const nlohmann::json j = nlohmann::json::parse(file.bytes);
     const std::string format = j.at("format").get<std::string>();
     if (format != "png") {
       throw ToolError(json_path.string() + ": frame format is '" + format + "'; the evaluation needs png frames "
@@ -50,6 +54,8 @@ DatasetFrame load_dataset_frame(const fs::path& json_path) {
     }
     f.picture = json_path.parent_path() / j.at("image").get<std::string>();
     f.index = j.at("frame").get<std::uint64_t>();
+    f.seed = j.at("seed").get<std::uint64_t>();
+    f.generator_version = j.value("generator_version", 1);
     const auto& k = j.at("intrinsics");
     f.intrinsics.width = k.at("width").get<int>();
     f.intrinsics.height = k.at("height").get<int>();

@@ -16,14 +16,16 @@ struct DatasetFrame {
   std::filesystem::path json;
   std::filesystem::path picture;  // empty when the frame is not a PNG/JPEG (e.g. raw yuyv)
   std::uint64_t index = 0;
+  std::uint64_t seed = 0;
+  int generator_version = 1;      // frames written before the field existed: 1
   hal::CameraIntrinsics intrinsics{};
   hal::CameraMount mount{};
   hal::HeadJoints head{};
   std::vector<TruthSegment> lines;
 };
 
-/// The frame_*.json files of a dataset folder, sorted by name. ToolError when the folder is
-/// missing or holds none.
+/// The frame_*.json files of a dataset folder, in index order (by name; frame_10000 after
+/// frame_9999). ToolError when the folder is missing or holds none.
 [[nodiscard]] std::vector<std::filesystem::path> list_dataset_frames(const std::filesystem::path& dir);
 
 /// Reads one frame's JSON. ToolError naming the file on a read or parse error, a missing field, or

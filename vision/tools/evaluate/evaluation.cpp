@@ -9,6 +9,7 @@
 #include <opencv2/core.hpp>
 
 #include "dataset_frame.hpp"
+#include "frame_identity.hpp"
 #include "ringlet/hal/yuv.hpp"
 #include "ringlet/vision/horizon.hpp"
 #include "vision_io.hpp"
@@ -102,6 +103,19 @@ HoughRun run_hough(const LoadedFrame& f, const HoughParams& p, int margin_px) {
   return r;
 }
 
+/// The identity of every frame of a set: its record's seed and index, and its pixels' hash.
+FrameSet identify(const std::vector<fs::path>& jsons, const char* role, const fs::path& folder,
+                  const std::function<void(const char*, std::size_t, std::size_t)>& progress) {
+  FrameSet set{role, folder.string(), {}};
+  const std::string stage = std::string("identifying ") + role + " frames";
+  for (std::size_t i = 0; i < jsons.size(); ++i) {
+    const DatasetFrame meta = load_dataset_frame(jsons[i]);
+    set.frames.push_back(frame_id(meta, tools::load_bgr(meta.picture, meta.intrinsics.width, meta.intrinsics.height)));
+    if (progress) progress(stage.c_str(), i + 1, jsons.size());
+  }
+  return set;
+}
+
 }  // namespace
 
 EvalReport run_evaluation(const EvalOptions& o) {
@@ -114,28 +128,60 @@ EvalReport run_evaluation(const EvalOptions& o) {
   report.ringlet.name = "Ringlet (LUT + scan lines + RANSAC)";
   report.baseline.name = "OpenCV Canny + HoughLinesP";
 
-  std::vector<fs::path> frames = list_dataset_frames(o.dataset);
-  if (o.max_frames > 0 && frames.size() > static_cast<std::size_t>(o.max_frames)) {
-    frames.resize(static_cast<std::size_t>(o.max_frames));
+  std::vector<fs::path> test = list_dataset_frames(o.dataset);
+  if (o.max_frames > 0 && test.size() > static_cast<std::size_t>(o.max_frames)) test.resize(static_cast<std::size_t>(o.max_frames));
+  std::vector<fs::path> tune;
+  const auto wanted = static_cast<std::size_t>(std::max(o.tune_frames, 0));
+  if (!o.tune_set.empty()) {
+    tune = list_dataset_frames(o.tune_set);
+    if (wanted > tune.size()) {
+      throw tools::ToolError(o.tune_set.string() + ": " + std::to_string(tune.size()) + " frames, but --tune " +
+                             std::to_string(wanted) + " asks for more");
+    }
+    if (wanted > 0) tune.resize(wanted);
+  } else {
+    if (wanted >= test.size()) {
+      throw tools::ToolError(o.dataset.string() + ": " + std::to_string(test.size()) + " frames, but --tune " +
+                             std::to_string(wanted) +
+                             " needs more: the frames after the tuning subset are the ones reported on");
+    }
+    tune.assign(test.begin(), test.begin() + static_cast<std::ptrdiff_t>(wanted));
+    test.erase(test.begin(), test.begin() + static_cast<std::ptrdiff_t>(wanted));
   }
-  report.frames_total = frames.size();
-  report.tune_frames = static_cast<std::size_t>(std::max(o.tune_frames, 0));
-  if (report.tune_frames >= frames.size()) {
-    throw tools::ToolError(o.dataset.string() + ": " + std::to_string(frames.size()) + " frames, but --tune " +
-                           std::to_string(report.tune_frames) +
-                           " needs more: the frames after the tuning subset are the ones reported on");
-  }
-  report.report_frames = frames.size() - report.tune_frames;
+  report.tune_frames = tune.size();
+  report.report_frames = test.size();
+  report.frames_total = tune.size() + test.size();
   const ColourTable table = tools::load_table(o.lut);
   const int margin = o.vision.horizon_margin_px;
 
-  // Tuning: every candidate on the tuning subset (kept in memory: it is read once per candidate).
-  if (report.tune_frames > 0) {
-    std::vector<LoadedFrame> tuning;
-    for (std::size_t i = 0; i < report.tune_frames; ++i) {
-      tuning.push_back(load_frame(frames[i]));
-      if (o.progress) o.progress("loading tuning frames", i + 1, report.tune_frames);
-    }
+  // Which frames are which, checked before anything is scored.
+  std::vector<LoadedFrame> tuning;
+  FrameSet tuning_ids{"tuning set", (o.tune_set.empty() ? o.dataset : o.tune_set).string(), {}};
+  for (std::size_t i = 0; i < tune.size(); ++i) {
+    tuning.push_back(load_frame(tune[i]));
+    tuning_ids.frames.push_back(frame_id(tuning.back().meta, tuning.back().bgr));
+    if (o.progress) o.progress("loading tuning frames", i + 1, tune.size());
+  }
+  const FrameSet test_ids = identify(test, "test set", o.dataset, o.progress);
+  report.test_set = test_ids.describe();
+  std::string checked;
+  if (!tuning.empty()) {
+    require_disjoint(tuning_ids, test_ids);
+    report.tuning_set = tuning_ids.describe();
+    checked = "the tuning set";
+  }
+  for (const fs::path& dir : o.disjoint_from) {
+    const FrameSet excluded = identify(list_dataset_frames(dir), "excluded set", dir, o.progress);
+    require_disjoint(excluded, test_ids);
+    report.excluded_sets.push_back(excluded.describe());
+    checked += std::string(checked.empty() ? "" : " and ") + "the excluded set " + dir.string();
+  }
+  report.disjointness = checked.empty() ? "nothing to check (no tuning, no excluded sets)"
+                                        : "the test set shares no frame with " + checked +
+                                              " (no equal generator, seed and index; no identical pixels)";
+
+  // Tuning: every candidate on the tuning set (kept in memory: it is read once per candidate).
+  if (!tuning.empty()) {
     const std::vector<HoughParams> candidates = HoughParams::candidates();
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       TuningResult t{candidates[c], {}};
@@ -150,11 +196,12 @@ EvalReport run_evaluation(const EvalOptions& o) {
     }
     report.hough = report.tuning[report.chosen].params;
   }
+  tuning.clear();
 
   std::unique_ptr<VisionPipeline> pipeline;
   std::vector<Segment2> segments;
-  for (std::size_t i = report.tune_frames; i < frames.size(); ++i) {
-    const LoadedFrame f = load_frame(frames[i]);
+  for (std::size_t i = 0; i < test.size(); ++i) {
+    const LoadedFrame f = load_frame(test[i]);
     if (!pipeline || !same_camera(pipeline->config(), f.meta)) {
       VisionConfig config = o.vision;
       config.intrinsics = f.meta.intrinsics;
@@ -165,7 +212,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
     const auto start = Clock::now();
     const VisionResult& result = pipeline->process(view, f.meta.head);
     report.ringlet.time_ms.push_back(elapsed_ms(start));
-    if (result.status != VisionStatus::kOk) throw tools::ToolError(frames[i].string() + ": the pipeline refused the frame");
+    if (result.status != VisionStatus::kOk) throw tools::ToolError(test[i].string() + ": the pipeline refused the frame");
     segments.clear();
     for (std::size_t l = 0; l < result.line_count; ++l) {
       const FieldLine& line = result.lines[l];
@@ -178,7 +225,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
     report.baseline.time_ms.push_back(h.ms);
     report.baseline.raw_detections += h.segments.size();
     report.baseline.counts += match_segments(h.segments, f.meta.lines, o.match);
-    if (o.progress) o.progress("evaluating", i + 1 - report.tune_frames, report.report_frames);
+    if (o.progress) o.progress("evaluating", i + 1, report.report_frames);
   }
   return report;
 }

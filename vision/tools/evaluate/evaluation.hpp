@@ -4,10 +4,12 @@
 // picture, edges above the horizon masked), scored by the same rule (segment_match.hpp) on the
 // same frames, each timed alone with std::chrono::steady_clock on one thread.
 //
-// Fairness: Hough's parameters are chosen (best F1 over HoughParams::candidates()) on the first
-// `tune_frames` frames, and BOTH detectors are reported only on the frames after them, so
-// neither is scored on frames its parameters were chosen on. (Ringlet's parameters were set
-// before this dataset existed.)
+// Fairness: Hough's parameters are chosen (best F1 over HoughParams::candidates()) on a tuning
+// set — another ringlet-dataset folder (`tune_set`), or the first `tune_frames` frames of the
+// dataset — and BOTH detectors are reported only on the test set. Before anything is scored, the
+// tuning set and every `disjoint_from` set (e.g. the frames Ringlet's own parameters were chosen
+// on) are checked against the test set (frame_identity.hpp: same seed and index, or identical
+// pixels); any shared frame is a ToolError, so a report can only come from unseen frames.
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -23,8 +25,12 @@ namespace ringlet::vision::evaluate {
 struct EvalOptions {
   std::filesystem::path dataset;
   std::filesystem::path lut;   // empty: the default thresholds table
-  int tune_frames = 40;        // 0: OpenCV-style defaults (HoughParams{}), no tuning
-  int max_frames = 0;          // 0: all
+  std::filesystem::path tune_set;  // empty: tune on the first tune_frames frames of `dataset`
+  /// Without tune_set: the first N frames of `dataset` tune Hough and are not reported (0: no
+  /// tuning, OpenCV-style defaults HoughParams{}). With tune_set: its first N frames (0: all).
+  int tune_frames = 40;
+  std::vector<std::filesystem::path> disjoint_from;  // sets the test set must share no frame with
+  int max_frames = 0;          // 0: all (of the test set)
   MatchParams match{};
   VisionConfig vision{};       // intrinsics and mount are replaced by each frame's
   /// (stage, done, total): "loading", "tuning", "evaluating".
@@ -49,9 +55,13 @@ struct TuningResult {
 struct EvalReport {
   std::string dataset;
   std::string lut;
+  std::string test_set;                 // FrameSet::describe() of each
+  std::string tuning_set;               // empty: no tuning
+  std::vector<std::string> excluded_sets;
+  std::string disjointness;             // what was checked, in words
   std::size_t frames_total = 0;
-  std::size_t tune_frames = 0;      // frames [0, tune_frames) were used for tuning only
-  std::size_t report_frames = 0;    // frames reported on: the rest
+  std::size_t tune_frames = 0;      // frames Hough was tuned on (none of them reported on)
+  std::size_t report_frames = 0;    // frames reported on: the test set
   HoughParams hough{};
   std::vector<TuningResult> tuning;  // every candidate, in HoughParams::candidates() order
   std::size_t chosen = 0;            // index into tuning (when tuned)
@@ -63,7 +73,8 @@ struct EvalReport {
 };
 
 /// Runs the whole comparison. ToolError on bad input (folder, frame records, images, LUT, too few
-/// frames for the tuning subset).
+/// frames for the tuning subset) and when the test set shares a frame with the tuning set or a
+/// disjoint_from set.
 [[nodiscard]] EvalReport run_evaluation(const EvalOptions& options);
 
 /// Percentile (nearest rank, p in [0, 100]) of unsorted values; 0 for none.

@@ -16,6 +16,20 @@ std::string fmt(const char* format, double v) {
   return text;
 }
 
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
 nlohmann::json detector_json(const DetectorReport& d) {
   const MatchCounts& c = d.counts;
   return {{"name", d.name},
@@ -36,12 +50,15 @@ nlohmann::json detector_json(const DetectorReport& d) {
 }  // namespace
 
 void print_report(const EvalReport& r, std::ostream& os) {
-  os << "dataset " << r.dataset << ": " << r.frames_total << " frames; ";
+  os << "test set:   " << r.test_set << "\n";
+  os << "tuning set: " << (r.tuning_set.empty() ? "none (Hough with OpenCV-style defaults)" : r.tuning_set) << "\n";
+  for (const std::string& e : r.excluded_sets) os << "excluded:   " << e << "\n";
+  os << "checked:    " << r.disjointness << "\n";
   if (r.tune_frames > 0) {
-    os << "Hough tuned on frames 0.." << r.tune_frames - 1 << " (best F1 of " << r.tuning.size()
-       << " parameter sets), both detectors reported on the other " << r.report_frames << " frames\n";
+    os << "Hough tuned on the " << r.tune_frames << " tuning frames (best F1 of " << r.tuning.size()
+       << " parameter sets); both detectors reported on the " << r.report_frames << " test frames only\n";
   } else {
-    os << "Hough untuned (defaults), both detectors reported on all " << r.report_frames << " frames\n";
+    os << "Hough untuned (defaults), both detectors reported on the " << r.report_frames << " test frames\n";
   }
   os << "colour table: " << r.lut << "\n";
   os << "Hough parameters: " << r.hough.describe() << "\n";
@@ -79,11 +96,16 @@ nlohmann::json report_json(const EvalReport& r) {
   }
   return {{"dataset", r.dataset},
           {"colour_table", r.lut},
+          {"test_set", r.test_set},
+          {"tuning_set", r.tuning_set},
+          {"excluded_sets", r.excluded_sets},
+          {"disjointness", r.disjointness},
           {"frames_total", r.frames_total},
           {"tune_frames", r.tune_frames},
           {"report_frames", r.report_frames},
-          {"protocol", "Hough parameters chosen by best F1 on frames [0, tune_frames); both detectors scored on the "
-                       "remaining frames only; each detector timed alone with steady_clock, one thread"},
+          {"protocol", "Hough parameters chosen by best F1 on the tuning set; both detectors scored on the test set "
+                       "only, which was checked to share no frame (seed and index, or pixels) with the tuning set "
+                       "and the excluded sets; each detector timed alone with steady_clock, one thread"},
           {"match", {{"max_angle_deg", r.match.max_angle_deg}, {"max_distance_px", r.match.max_distance_px},
                      {"min_coverage", r.match.min_coverage}, {"min_truth_length_px", r.match.min_truth_length_px}}},
           {"hough_params", r.hough.describe()},
@@ -103,7 +125,8 @@ std::string report_svg(const EvalReport& r) {
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kW << "\" height=\"" << kH
     << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   s << "<text x=\"10\" y=\"20\" font-size=\"14\" font-weight=\"bold\">Field lines: Ringlet vs Canny + HoughLinesP, "
-    << r.report_frames << " frames (Hough tuned on " << r.tune_frames << " other frames)</text>\n";
+    << r.report_frames << " unseen test frames (Hough tuned on " << r.tune_frames << " other frames)</text>\n";
+  s << "<text x=\"10\" y=\"38\" font-size=\"10\" fill=\"#555\">test set " << xml_escape(r.test_set) << "</text>\n";
   // Panel 1.
   const int x0 = 50, y0 = 60, ph = 260, pw = 330;
   s << "<line x1=\"" << x0 << "\" y1=\"" << y0 + ph << "\" x2=\"" << x0 + pw << "\" y2=\"" << y0 + ph

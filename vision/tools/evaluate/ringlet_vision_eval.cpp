@@ -4,18 +4,23 @@
 // head, and Canny + HoughLinesP on the BGR picture with the same horizon mask; both scored against
 // the visible straight line runs by the rule in segment_match.hpp, and timed.
 //
-// Hough's parameters are tuned on the first --tune frames (best F1 of HoughParams::candidates());
-// both detectors are then reported on the remaining frames only, so nothing is scored on the
-// frames it was tuned on.
+// Hough's parameters are tuned (best F1 of HoughParams::candidates()) on a tuning set: another
+// ringlet-dataset folder (--tune-set, e.g. another seed), or the first --tune frames of DATASET.
+// Both detectors are reported on the test set only (DATASET, or the rest of it). Before anything
+// is scored the test set is checked against the tuning set and every --disjoint-from folder (the
+// frames anyone chose parameters on): a frame with the same generator, seed and index, or with
+// identical pixels, in both is refused (exit 2). The output names all the sets.
 //
 // Exit codes: 0 done · 2 bad input (flags, folder, frame records, images, colour table, too few
-// frames) · 1 internal or output error (cannot write --json or --svg).
+// frames, overlapping tuning and test sets) · 1 internal or output error (cannot write --json or
+// --svg).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <vector>
 #include <unistd.h>
 
 #include "evaluation.hpp"
@@ -40,29 +45,41 @@ bool write_file(const std::string& path, const std::string& text) {
 
 int main(int argc, char** argv) {
   evaluate::EvalOptions o;
-  std::string dataset, lut, json, svg;
+  std::string dataset, lut, json, svg, tune_set;
+  std::vector<std::string> disjoint_from;
   bool quiet = false;
   CLI::App app{"ringlet-vision-eval: compare Ringlet's field-line detector with Canny + HoughLinesP on a "
                "ringlet-dataset folder (precision, recall, F1, errors, time per frame). Exit codes: 0 done, "
                "2 bad input, 1 internal or output error."};
   app.add_option("dataset", dataset, "folder written by ringlet-dataset (png format)")->required();
   app.add_option("--lut", lut, "colour table for Ringlet (default: the built-in default thresholds)");
-  app.add_option("--tune", o.tune_frames, "Hough is tuned on this many first frames, which are then left out of "
-                                          "the report (0: OpenCV-style defaults, report on all)")
+  app.add_option("--tune-set", tune_set, "tune Hough on this ringlet-dataset folder (all its frames, or its first "
+                                        "--tune) and report on all of DATASET; the two must share no frame")
+      ->check(CLI::ExistingDirectory);
+  app.add_option("--tune", o.tune_frames, "without --tune-set: Hough is tuned on this many first frames of DATASET, "
+                                          "which are then left out of the report (0: OpenCV-style defaults, report "
+                                          "on all); with --tune-set: use its first N frames")
       ->capture_default_str()->check(CLI::Range(0, 1000000));
+  app.add_option("--disjoint-from", disjoint_from, "ringlet-dataset folders the test set must share no frame with "
+                                                   "(e.g. the frames Ringlet's parameters were chosen on); repeatable")
+      ->check(CLI::ExistingDirectory);
   app.add_option("--max-frames", o.max_frames, "use only the first N frames (0: all)")->capture_default_str()
       ->check(CLI::Range(0, 1000000));
-  app.add_option("--max-angle", o.match.max_angle_deg, "matching: max angle (deg)")->capture_default_str();
+  app.add_option("--max-angle", o.match.max_angle_deg, "matching: max angle (deg)")
+      ->capture_default_str()->check(tools::finite_range(0.0, 90.0, "deg"));
   app.add_option("--max-distance", o.match.max_distance_px, "matching: endpoint distance (px) beyond the half width")
-      ->capture_default_str();
+      ->capture_default_str()->check(tools::finite_range(0.0, 1000.0, "px"));
   app.add_option("--min-coverage", o.match.min_coverage, "matching: share of a true segment to cover for recall")
-      ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+      ->capture_default_str()->check(tools::finite_range(0.0, 1.0, ""));
   app.add_option("--json", json, "write the full report (per-frame times, tuning) as JSON");
   app.add_option("--svg", svg, "write a comparison chart (SVG)");
   app.add_flag("-q,--quiet", quiet, "no progress output");
   return tools::run_tool(app, argc, argv, "ringlet-vision-eval", [&] {
     o.dataset = dataset;
     o.lut = lut;
+    o.tune_set = tune_set;
+    if (!tune_set.empty() && app.count("--tune") == 0) o.tune_frames = 0;  // all of the tuning set
+    o.disjoint_from.assign(disjoint_from.begin(), disjoint_from.end());
     if (!quiet) {
       const bool tty = isatty(fileno(stderr)) != 0;
       o.progress = [tty](const char* stage, std::size_t done, std::size_t total) {

@@ -50,6 +50,15 @@ struct CameraMount {
   double up = 0.06;            // m
 };
 
+/// The NAO's head joint ranges (Aldebaran's NAO V6 joint documentation: HeadYaw ±119.5°, HeadPitch
+/// −38.5° to +29.5° in its convention, where positive also looks down). Tools that take a head
+/// posture from the user refuse anything outside, so a typo cannot put the camera upside down.
+struct NaoHeadRange {
+  static constexpr double kMaxYawDeg = 119.5;
+  static constexpr double kMinPitchDeg = -38.5;  // looking up
+  static constexpr double kMaxPitchDeg = 29.5;   // looking down
+};
+
 /// The camera for one head posture: its position and axes, in the robot frame.
 struct CameraPose {
   Vec3 position{};

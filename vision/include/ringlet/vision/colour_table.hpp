@@ -16,6 +16,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ringlet/vision/colour.hpp"
@@ -90,7 +91,14 @@ class ColourTable {
                                                  const ExampleTrainingOptions& options = {},
                                                  int bin_bits = kDefaultBinBits);
 
+  /// Reads the file (hal::read_file: regular files only, at most hal::kMaxBinaryFileBytes) and
+  /// parses it. Errors: "colour table <file>: <what>", e.g. "not a regular file (a directory)".
   [[nodiscard]] static ColourTableLoad load(const std::filesystem::path& file);
+  /// A table from the bytes of a colour-table file; `source` names them in the error
+  /// ("colour table <source>: <what>"). Every field and entry is checked before a table is built.
+  [[nodiscard]] static ColourTableLoad parse(std::span<const std::uint8_t> bytes, std::string_view source);
+  /// The bytes of the file `save` writes.
+  [[nodiscard]] std::vector<std::uint8_t> serialise() const;
   /// Writes the file (whole or, on error, an error text naming it; "" on success).
   [[nodiscard]] std::string save(const std::filesystem::path& file) const;
 
