@@ -141,7 +141,8 @@ def generate_header(model, ns, include_path):
             if section in s.actions:
                 e(f"  void {s.name}_{section}();")
     e()
-    e("  ::ringlet::wb::Whiteboard& wb_;")
+    # maybe_unused: a machine that reads and writes no message never touches it (clang warns).
+    e("  [[maybe_unused]] ::ringlet::wb::Whiteboard& wb_;")
     for v in model.variables.values():
         if v.kind == "external":
             e(f"  {v.cxx_type} {v.member}{{}};  // {v.access}")

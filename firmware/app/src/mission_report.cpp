@@ -30,7 +30,8 @@ struct Fnv1a {
 
 // Everything the controller decided that is not a pose: what the schedule ran, skipped and
 // degraded, what vision found, where the machines ended, what the robot hit. Host measurements
-// (wall and CPU times, measured overruns) stay out: they differ from run to run by nature.
+// (wall and CPU times, measured overruns) stay out: they differ from run to run by nature. So do
+// scores computed from ground truth with libm (see head tracking below).
 std::uint64_t run_hash(const FirmwareStack& stack, const MissionSummary& s) noexcept {
   Fnv1a f;
   f.bits(s.trajectory_hash);
@@ -60,8 +61,10 @@ std::uint64_t run_hash(const FirmwareStack& stack, const MissionSummary& s) noex
       f.bits(v);
     }
   }
+  // The head-tracking score counts, not its error sum: the error is computed for scoring with libm
+  // (atan2), whose last bits differ between x86-64 and aarch64, and it decides nothing.
   f.bits(s.head.frames);
-  f.real(s.head.sum_error);
+  f.bits(s.head.on_target);
   return f.h;
 }
 
