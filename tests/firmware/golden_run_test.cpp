@@ -67,9 +67,9 @@ std::string spl_field_policies_acting(double seconds) {
                    "  { name = \"telemetry\", every = 1, phase = 0, budget_us = 3, policy = \"skip\" },");
 }
 
-constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0xb66542de2f7d669cULL, 0x76290d491ee3000bULL};
-constexpr Golden kSplField{"spl_field.toml (8 s)", 0xf7f8090332d96d00ULL, 0xb64f5b6b0e0a07afULL};
-constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x5620a62c0b652a82ULL, 0x7fc51303867b5a59ULL};
+constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0xb66542de2f7d669cULL, 0x5e64f0f19e6f37f5ULL};
+constexpr Golden kSplField{"spl_field.toml (8 s)", 0xf7f8090332d96d00ULL, 0xc02dfd0d46d93536ULL};
+constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x5620a62c0b652a82ULL, 0x8daafb1119d1b638ULL};
 
 TEST(GoldenRun, CourtyardMission) {
   const auto s = run(courtyard(), kCourtyard.name);
