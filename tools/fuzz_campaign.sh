@@ -66,6 +66,12 @@ for name in "${targets[@]}"; do
   args=(-seed=1 -runs="$RUNS" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
         -artifact_prefix="$work/artifacts/")
   [[ -f "$SRC_DIR/$name.dict" ]] && args+=(-dict="$SRC_DIR/$name.dict")
+  # Per-target campaign flags (one libFuzzer flag a line, e.g. -max_len), in tests/fuzz/NAME.args.
+  if [[ -f "$SRC_DIR/$name.args" ]]; then
+    while IFS= read -r flag; do
+      if [[ -n "$flag" && "$flag" != \#* ]]; then args+=("$flag"); fi
+    done <"$SRC_DIR/$name.args"
+  fi
   cmd=(nice -n 19 "$bin" "${args[@]}" "$work/corpus" "$seeds")
   echo "fuzz_campaign: ${cmd[*]}" | tee "$work/command.txt"
   start=$SECONDS
