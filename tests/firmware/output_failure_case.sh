@@ -8,12 +8,8 @@ bin=$1 config=$2 work=$3
 shift 3
 emulator=("$@")
 
-fail() {
-  echo "FAIL: $*"
-  echo "--- stdout"; cat "$work/stdout" 2>/dev/null
-  echo "--- stderr (first 60 lines)"; head -n 60 "$work/stderr" 2>/dev/null
-  exit 1
-}
+# shellcheck source=case_lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/case_lib.sh"
 
 rm -rf "$work" && mkdir -p "$work/vanishing" || exit 1
 "${emulator[@]}" "$bin" --config "$config" --realtime --duration 4 --report "$work/vanishing/report.json" \

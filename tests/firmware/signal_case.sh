@@ -7,12 +7,8 @@ bin=$1 config=$2 work=$3 sig=$4 want_rc=$5
 shift 5
 emulator=("$@")
 
-fail() {
-  echo "FAIL: $*"
-  echo "--- stdout"; cat "$work/stdout" 2>/dev/null
-  echo "--- stderr (first 60 lines)"; head -n 60 "$work/stderr" 2>/dev/null
-  exit 1
-}
+# shellcheck source=case_lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/case_lib.sh"
 
 rm -rf "$work" && mkdir -p "$work" || exit 1
 # Job control: without it bash starts background jobs with SIGINT and SIGQUIT ignored, and ringlet
