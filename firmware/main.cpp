@@ -22,7 +22,7 @@
 #include "ringlet/firmware/output_file.hpp"
 #include "ringlet/firmware/schedule_report.hpp"
 #include "ringlet/firmware/stack.hpp"
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
 namespace {
 
@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
   } catch (const firmware::ConfigError& e) {
     std::cerr << "ringlet: " << e.what() << '\n';
     return 2;
-  } catch (const sim::WorldError& e) {
+  } catch (const sim_hal::WorldError& e) {
     std::cerr << "ringlet: " << e.what() << '\n';
     return 2;
   } catch (const executive::TableError& e) {

@@ -13,7 +13,7 @@
 #      (e.g. `ringlet/executive/`), nor links a firmware target (`ringlet_firmware*` or any
 #      target defined under firmware/);
 #   2. hal/, behaviour/, vision/, planning/, whiteboard/ do not include sim_hal headers
-#      (`ringlet/sim/...`, `sim_hal/...`, or any `ringlet/<x>/` under sim_hal/**/include/) nor
+#      (`ringlet/sim_hal/...`, `sim_hal/...`, or any `ringlet/<x>/` under sim_hal/**/include/) nor
 #      link `ringlet_sim_hal` (or any target defined under sim_hal/);
 #   3. hal/ does not include behaviour/, vision/, planning/ headers nor link their targets.
 # CMake: every target_link_libraries / link_libraries / ringlet_library call in CMakeLists.txt
@@ -70,7 +70,7 @@ include_owner() {
   while [[ "$p" == ../* ]]; do p="${p#../}"; done
   case "$p" in
     ringlet/firmware/*|firmware/*) OWNER=firmware; return 0 ;;
-    ringlet/sim/*|sim_hal/*) OWNER=sim_hal; return 0 ;;
+    ringlet/sim_hal/*|sim_hal/*) OWNER=sim_hal; return 0 ;;
     ringlet/behaviour/*|behaviour/*) OWNER=behaviour; return 0 ;;
     ringlet/vision/*|vision/*) OWNER=vision; return 0 ;;
     ringlet/planning/*|planning/*) OWNER=planning; return 0 ;;
@@ -248,22 +248,22 @@ self_test() {
   # A clean tree that exercises every allowed edge (and comments that look like violations).
   make_clean_tree() {
     local t="$1"
-    mkdir -p "$t"/{hal/include/ringlet/hal,hal/src,sim_hal/include/ringlet/sim,sim_hal/src} \
+    mkdir -p "$t"/{hal/include/ringlet/hal,hal/src,sim_hal/include/ringlet/sim_hal,sim_hal/src} \
       "$t"/{behaviour/src,vision/src,planning/src,whiteboard/src,tests/hal} \
       "$t"/firmware/executive/{include/ringlet/executive,src}
     printf '#pragma once\n#include <cstdint>\n' > "$t/hal/include/ringlet/hal/time.hpp"
     printf '#include "ringlet/hal/time.hpp"\n// #include "ringlet/firmware/x.hpp"\n' \
       > "$t/hal/src/clock.cpp"
-    printf '#pragma once\n#include <ringlet/hal/time.hpp>\n' > "$t/sim_hal/include/ringlet/sim/world.hpp"
-    printf '#include "ringlet/sim/world.hpp"\n' > "$t/sim_hal/src/world.cpp"
-    printf '#include "ringlet/hal/time.hpp"\n/* #include "ringlet/sim/world.hpp" */\n' \
+    printf '#pragma once\n#include <ringlet/hal/time.hpp>\n' > "$t/sim_hal/include/ringlet/sim_hal/world.hpp"
+    printf '#include "ringlet/sim_hal/world.hpp"\n' > "$t/sim_hal/src/world.cpp"
+    printf '#include "ringlet/hal/time.hpp"\n/* #include "ringlet/sim_hal/world.hpp" */\n' \
       > "$t/behaviour/src/follow.cpp"
     printf '#include <ringlet/behaviour/follow.hpp>\n#include <ringlet/hal/time.hpp>\n' \
       > "$t/planning/src/dstar.cpp"
     printf '#pragma once\n' > "$t/firmware/executive/include/ringlet/executive/task.hpp"
-    printf '#include "ringlet/executive/task.hpp"\n#include "ringlet/sim/world.hpp"\n' \
+    printf '#include "ringlet/executive/task.hpp"\n#include "ringlet/sim_hal/world.hpp"\n' \
       > "$t/firmware/executive/src/task.cpp"
-    printf '#include "ringlet/firmware/config.hpp"\n#include "ringlet/executive/task.hpp"\n#include "ringlet/sim/world.hpp"\n' \
+    printf '#include "ringlet/firmware/config.hpp"\n#include "ringlet/executive/task.hpp"\n#include "ringlet/sim_hal/world.hpp"\n' \
       > "$t/tests/hal/t.cpp"
     printf 'ringlet_library(ringlet_hal SOURCES src/clock.cpp)\n# target_link_libraries(ringlet_hal PUBLIC ringlet_sim_hal)\n' \
       > "$t/hal/CMakeLists.txt"
@@ -307,11 +307,11 @@ self_test() {
   expect "sim_hal includes a firmware header found under firmware/**/include" 1 \
     "sim_hal/src/bad.cpp:1: sim_hal must not include firmware (ringlet/executive/task.hpp)" \
     "printf '#include <ringlet/executive/task.hpp>\n' > sim_hal/src/bad.cpp"
-  expect "hal includes ringlet/sim/" 1 "hal/src/bad.cpp:1: hal must not include sim_hal" \
-    "printf '  #  include <ringlet/sim/world.hpp>\n' > hal/src/bad.cpp"
-  expect "whiteboard includes ringlet/sim/" 1 \
+  expect "hal includes ringlet/sim_hal/" 1 "hal/src/bad.cpp:1: hal must not include sim_hal" \
+    "printf '  #  include <ringlet/sim_hal/world.hpp>\n' > hal/src/bad.cpp"
+  expect "whiteboard includes ringlet/sim_hal/" 1 \
     "whiteboard/src/bad.cpp:1: whiteboard must not include sim_hal" \
-    "printf '#include \"ringlet/sim/world.hpp\"\n' > whiteboard/src/bad.cpp"
+    "printf '#include \"ringlet/sim_hal/world.hpp\"\n' > whiteboard/src/bad.cpp"
   expect "hal includes behaviour" 1 \
     "hal/include/ringlet/hal/bad.hpp:2: hal must not include behaviour" \
     "printf '#pragma once\n#include \"ringlet/behaviour/follow.hpp\"\n' > hal/include/ringlet/hal/bad.hpp"

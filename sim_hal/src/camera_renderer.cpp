@@ -2,7 +2,7 @@
 // linear in u, so a row needs one multiply-add per component per pixel and no trig; obstacles are
 // only tested inside their projected bounding boxes; markings are looked up in a coarse grid of
 // the ground instead of being tested one by one.
-#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "render_math.hpp"
 #include "vec2_math.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 using detail::add;

@@ -6,9 +6,9 @@
 #include <numbers>
 
 #include "render_math.hpp"
-#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 using detail::dot;

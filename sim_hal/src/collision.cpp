@@ -1,12 +1,12 @@
 // Ray and disc queries against circles, polygon edges and the four walls of the bounds. They run
 // every cycle (the laser casts one ray per beam), so they only read the World, never allocate.
-#include "ringlet/sim/collision.hpp"
+#include "ringlet/sim_hal/collision.hpp"
 
 #include <cmath>
 
 #include "vec2_math.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 using detail::operator-;

@@ -6,12 +6,12 @@
 // with s = v t, dtheta = kappa s and theta_mid = theta0 + dtheta / 2. That form has no 1/kappa to
 // blow up, goes to the straight line x += s sin theta0, y += s cos theta0 as kappa -> 0 without a
 // jump, and loses no precision to the cancellation in cos theta0 - cos theta1 on gentle arcs.
-#include "ringlet/sim/kinematics.hpp"
+#include "ringlet/sim_hal/kinematics.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 /// sin(u) / u, with its Taylor series near 0 where the quotient would be 0/0. Below 1e-4 the first

@@ -3,7 +3,7 @@
 #include <array>
 #include <charconv>
 
-namespace ringlet::sim::detail {
+namespace ringlet::sim_hal::detail {
 
 std::string format_number(double value) {
   std::array<char, 64> buffer{};
@@ -26,4 +26,4 @@ void append_fixed(std::string& out, double value, int decimals) {
   out.append(text);
 }
 
-}  // namespace ringlet::sim::detail
+}  // namespace ringlet::sim_hal::detail

@@ -3,7 +3,7 @@
 // the global locale, so the same value always produces the same bytes.
 #include <string>
 
-namespace ringlet::sim::detail {
+namespace ringlet::sim_hal::detail {
 
 /// Shortest text that reads back as the same double: 0.5, -1, 1e+300, inf.
 [[nodiscard]] std::string format_number(double value);
@@ -11,4 +11,4 @@ namespace ringlet::sim::detail {
 /// Appends `value` with exactly `decimals` digits after the point; never prints "-0.000".
 void append_fixed(std::string& out, double value, int decimals);
 
-}  // namespace ringlet::sim::detail
+}  // namespace ringlet::sim_hal::detail

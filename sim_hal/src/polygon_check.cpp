@@ -2,7 +2,7 @@
 
 #include "vec2_math.hpp"
 
-namespace ringlet::sim::detail {
+namespace ringlet::sim_hal::detail {
 namespace {
 
 int orientation(Vec2 a, Vec2 b, Vec2 c) noexcept {
@@ -62,4 +62,4 @@ std::optional<PolygonDefect> find_polygon_defect(std::span<const Vec2> vertices)
   return std::nullopt;
 }
 
-}  // namespace ringlet::sim::detail
+}  // namespace ringlet::sim_hal::detail

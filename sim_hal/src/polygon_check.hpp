@@ -5,9 +5,9 @@
 #include <optional>
 #include <span>
 
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
-namespace ringlet::sim::detail {
+namespace ringlet::sim_hal::detail {
 
 struct PolygonDefect {
   enum class Kind { kRepeatedVertex, kEdgesIntersect };
@@ -19,4 +19,4 @@ struct PolygonDefect {
 /// The first defect found, or nothing for a simple polygon. Needs at least 3 vertices.
 [[nodiscard]] std::optional<PolygonDefect> find_polygon_defect(std::span<const Vec2> vertices) noexcept;
 
-}  // namespace ringlet::sim::detail
+}  // namespace ringlet::sim_hal::detail

@@ -8,9 +8,9 @@
 #include <limits>
 
 #include "ringlet/hal/camera_geometry.hpp"
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
-namespace ringlet::sim::detail {
+namespace ringlet::sim_hal::detail {
 
 using hal::Vec3;
 
@@ -106,4 +106,4 @@ inline double value_noise(double x, double y, std::uint32_t seed) noexcept {
   return top + (bottom - top) * fy;
 }
 
-}  // namespace ringlet::sim::detail
+}  // namespace ringlet::sim_hal::detail

@@ -1,6 +1,6 @@
 // The render thread hand-over of the simulated camera. One job at a time: a capture hands over a
 // slot and the pose; the next tick waits for "done" and delivers that slot.
-#include "ringlet/sim/sim_camera.hpp"
+#include "ringlet/sim_hal/sim_camera.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "number_text.hpp"
 #include "ringlet/hal/yuv.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 std::size_t frame_bytes(const SimCameraConfig& c) noexcept {

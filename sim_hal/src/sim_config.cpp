@@ -7,9 +7,9 @@
 #include <string_view>
 
 #include "number_text.hpp"
-#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 [[noreturn]] void reject(std::string_view field, std::string_view rule, const std::string& got) {

@@ -1,6 +1,6 @@
 // The lockstep simulated robot: read() moves the world one period and measures it; write() only
 // stores the command that the next read() will apply. Nothing here allocates after construction.
-#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <string>
 
 #include "number_text.hpp"
-#include "ringlet/sim/collision.hpp"
+#include "ringlet/sim_hal/collision.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 /// Battery model: a linear drain with distance driven, and a fixed drop to the bus behind it.

@@ -1,9 +1,9 @@
 #pragma once
 // The few vector operations the geometry code needs, kept inline so the cycle-time queries stay
 // allocation-free and cheap.
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
-namespace ringlet::sim::detail {
+namespace ringlet::sim_hal::detail {
 
 constexpr Vec2 operator+(Vec2 a, Vec2 b) noexcept { return {a.x + b.x, a.y + b.y}; }
 constexpr Vec2 operator-(Vec2 a, Vec2 b) noexcept { return {a.x - b.x, a.y - b.y}; }
@@ -23,4 +23,4 @@ constexpr double segment_distance_squared(Vec2 p, Vec2 a, Vec2 b) noexcept {
   return length_squared(p - (a + t * ab));
 }
 
-}  // namespace ringlet::sim::detail
+}  // namespace ringlet::sim_hal::detail

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <system_error>
 
-namespace ringlet::sim::detail {
+namespace ringlet::sim_hal::detail {
 namespace {
 
 constexpr bool is_space(char c) noexcept {
@@ -64,4 +64,4 @@ std::optional<int> parse_integer(const Token& token) noexcept {
   return value;
 }
 
-}  // namespace ringlet::sim::detail
+}  // namespace ringlet::sim_hal::detail

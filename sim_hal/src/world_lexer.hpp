@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace ringlet::sim::detail {
+namespace ringlet::sim_hal::detail {
 
 struct Token {
   std::string_view text;  // without the quotes for a quoted token
@@ -31,4 +31,4 @@ struct NumberResult {
 /// Reads a base-10 integer that fills the whole token.
 [[nodiscard]] std::optional<int> parse_integer(const Token& token) noexcept;
 
-}  // namespace ringlet::sim::detail
+}  // namespace ringlet::sim_hal::detail

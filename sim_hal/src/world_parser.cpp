@@ -8,10 +8,10 @@
 
 #include "polygon_check.hpp"
 #include "ringlet/hal/read_file.hpp"
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/world.hpp"
 #include "world_lexer.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 using detail::Token;

@@ -1,7 +1,7 @@
 // A self-contained SVG of a world and a run in it. The picture is built in a string with every
 // number printed the same fixed way, so the same inputs always give byte-identical files (they
 // end up in reports and diffs).
-#include "ringlet/sim/world_svg.hpp"
+#include "ringlet/sim_hal/world_svg.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -13,7 +13,7 @@
 
 #include "number_text.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 constexpr double kWorldWidthPx = 900.0;

@@ -4,15 +4,15 @@
 
 #include <vector>
 
-#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
 #include "ringlet/hal/yuv.hpp"
 
 namespace {
 
 using namespace ringlet;
 
-sim::CameraRenderer make_renderer() {
-  return sim::CameraRenderer(sim::load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"), sim::CameraSpec{}, 7);
+sim_hal::CameraRenderer make_renderer() {
+  return sim_hal::CameraRenderer(sim_hal::load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"), sim_hal::CameraSpec{}, 7);
 }
 
 // A typical view: from the own half towards the centre circle, a robot and the ball in view.
@@ -20,7 +20,7 @@ const hal::Pose2 kPose{-2.0, -0.4, hal::deg_to_rad(80.0)};
 const hal::HeadJoints kHead{0.1, 0.3};
 
 void BM_RenderSplField(benchmark::State& state) {
-  sim::CameraRenderer renderer = make_renderer();
+  sim_hal::CameraRenderer renderer = make_renderer();
   for (auto _ : state) {
     renderer.render(kPose, kHead);
     benchmark::DoNotOptimize(renderer.bgr().data());
@@ -29,7 +29,7 @@ void BM_RenderSplField(benchmark::State& state) {
 BENCHMARK(BM_RenderSplField)->Unit(benchmark::kMillisecond);
 
 void BM_RenderSplFieldLookingUp(benchmark::State& state) {
-  sim::CameraRenderer renderer = make_renderer();
+  sim_hal::CameraRenderer renderer = make_renderer();
   for (auto _ : state) {
     renderer.render(kPose, hal::HeadJoints{0.0, -0.1});  // half the picture above the horizon
     benchmark::DoNotOptimize(renderer.bgr().data());
@@ -38,7 +38,7 @@ void BM_RenderSplFieldLookingUp(benchmark::State& state) {
 BENCHMARK(BM_RenderSplFieldLookingUp)->Unit(benchmark::kMillisecond);
 
 void BM_BgrToYuyv(benchmark::State& state) {
-  sim::CameraRenderer renderer = make_renderer();
+  sim_hal::CameraRenderer renderer = make_renderer();
   renderer.render(kPose, kHead);
   std::vector<std::uint8_t> yuyv(640U * 480U * 2U);
   for (auto _ : state) {

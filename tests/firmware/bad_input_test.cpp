@@ -22,7 +22,7 @@
 #include "ringlet/firmware/output_file.hpp"
 #include "ringlet/firmware/stack.hpp"
 #include "ringlet/hal/read_file.hpp"
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
 namespace ringlet::firmware {
 namespace {
@@ -178,15 +178,15 @@ TEST(InputFiles, ConfigLargerThanTheLimitIsRefused) {
 }
 
 TEST(InputFiles, WorldThatIsADeviceOrDirectoryIsNotRead) {
-  EXPECT_EQ(error_of<sim::WorldError>([] { (void)sim::load_world("/dev/zero"); }),
+  EXPECT_EQ(error_of<sim_hal::WorldError>([] { (void)sim_hal::load_world("/dev/zero"); }),
             "/dev/zero: cannot read world file: not a regular file (a character device)");
-  EXPECT_EQ(error_of<sim::WorldError>([] { (void)sim::load_world(kData); }),
+  EXPECT_EQ(error_of<sim_hal::WorldError>([] { (void)sim_hal::load_world(kData); }),
             kData.string() + ": cannot read world file: not a regular file (a directory)");
 }
 
 TEST(InputFiles, UnreadableWorldNamesTheConfigKeyThatNamedIt) {
   const auto cfg = load_config(kData / "world_dev_zero.toml");
-  const std::string m = error_of<sim::WorldError>([&] { FirmwareStack stack(cfg); });
+  const std::string m = error_of<sim_hal::WorldError>([&] { FirmwareStack stack(cfg); });
   EXPECT_EQ(m, (kData / "world_dev_zero.toml").string() +
                    ":3:9: sim.world: /dev/zero: cannot read world file: not a regular file (a character device)");
 }
@@ -216,7 +216,7 @@ TEST(ConfigPositions, UnknownTaskNamesItsRow) {
 
 TEST(ConfigPositions, StartPoseCollisionNamesTheWorldLineAndTheRadius) {
   const auto cfg = load_config(kData / "start_collides.toml");
-  const std::string m = error_of<sim::WorldError>([&] { FirmwareStack stack(cfg); });
+  const std::string m = error_of<sim_hal::WorldError>([&] { FirmwareStack stack(cfg); });
   EXPECT_EQ(m, (kData / "start_collides.world").string() +
                    ":5: start pose (2, 2) collides with an obstacle or the bounds for a robot of radius 0.25 m "
                    "(sim.robot_radius, " +

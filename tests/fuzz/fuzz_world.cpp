@@ -9,24 +9,24 @@
 #include <string>
 #include <string_view>
 
-#include "ringlet/sim/collision.hpp"
-#include "ringlet/sim/world.hpp"
-#include "ringlet/sim/world_svg.hpp"
+#include "ringlet/sim_hal/collision.hpp"
+#include "ringlet/sim_hal/world.hpp"
+#include "ringlet/sim_hal/world_svg.hpp"
 
 namespace {
 
 constexpr std::string_view kSource = "fuzz.world";
 
-bool finite(ringlet::sim::Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+bool finite(ringlet::sim_hal::Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
-bool inside(const ringlet::sim::World& w, ringlet::sim::Vec2 v) {
+bool inside(const ringlet::sim_hal::World& w, ringlet::sim_hal::Vec2 v) {
   return v.x >= w.min.x && v.x <= w.max.x && v.y >= w.min.y && v.y <= w.max.y;
 }
 
 // What the simulator relies on once parse_world returned (world.hpp, sim_hal/README.md).
-void check(const ringlet::sim::World& w) {
+void check(const ringlet::sim_hal::World& w) {
   if (!finite(w.min) || !finite(w.max) || !(w.min.x < w.max.x) || !(w.min.y < w.max.y)) __builtin_trap();
-  const ringlet::sim::Vec2 start{w.start.x, w.start.y};
+  const ringlet::sim_hal::Vec2 start{w.start.x, w.start.y};
   if (!finite(start) || !inside(w, start)) __builtin_trap();
   // Headings are wrapped to (-pi, pi] (a NaN fails these comparisons too).
   if (!(std::abs(w.start.theta) <= std::numbers::pi)) __builtin_trap();
@@ -49,12 +49,12 @@ void check(const ringlet::sim::World& w) {
   // start pose, and the picture.
   constexpr double kMaxRange = 8.0;
   for (int i = 0; i < 8; ++i) {
-    const double d = ringlet::sim::cast_ray(w, start, i * (std::numbers::pi / 4.0), kMaxRange);
+    const double d = ringlet::sim_hal::cast_ray(w, start, i * (std::numbers::pi / 4.0), kMaxRange);
     if (std::isnan(d) || d < 0.0) __builtin_trap();
   }
-  (void)ringlet::sim::disc_collides(w, start, 0.25);
+  (void)ringlet::sim_hal::disc_collides(w, start, 0.25);
   std::ostringstream svg;
-  ringlet::sim::write_world_svg(svg, w, ringlet::sim::RunOverlay{});
+  ringlet::sim_hal::write_world_svg(svg, w, ringlet::sim_hal::RunOverlay{});
   if (svg.str().find("</svg>") == std::string::npos) __builtin_trap();
 }
 
@@ -63,8 +63,8 @@ void check(const ringlet::sim::World& w) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    check(ringlet::sim::parse_world(text, kSource));
-  } catch (const ringlet::sim::WorldError& e) {
+    check(ringlet::sim_hal::parse_world(text, kSource));
+  } catch (const ringlet::sim_hal::WorldError& e) {
     // Every message names where: "fuzz.world:line: ...".
     if (std::string_view(e.what()).substr(0, kSource.size() + 1) != std::string(kSource) + ":") __builtin_trap();
   }

@@ -1,5 +1,5 @@
 // The real camera backend is tested by replaying frames the simulator wrote: three frames rendered
-// by sim::CameraRenderer are saved as PNG (lossless) and replayed through hal::OpenCvCamera; the
+// by sim_hal::CameraRenderer are saved as PNG (lossless) and replayed through hal::OpenCvCamera; the
 // bytes it hands out must be exactly the renderer's BGR, or hal::bgr_to_yuyv of it.
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/hal/opencv_camera.hpp"
 #include "ringlet/hal/yuv.hpp"
-#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
 
 namespace ringlet {
 namespace {
@@ -33,7 +33,7 @@ class ReplayRendered : public ::testing::Test {
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("ringlet-replay-" + std::to_string(::getpid()));
     fs::create_directories(dir_);
-    sim::CameraRenderer renderer(sim::load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"), sim::CameraSpec{}, 7);
+    sim_hal::CameraRenderer renderer(sim_hal::load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"), sim_hal::CameraSpec{}, 7);
     const hal::CameraIntrinsics& k = renderer.spec().intrinsics;
     // Three different views: the centre circle, a penalty box, a touch line.
     const hal::Pose2 poses[3] = {{2.0, -0.3, -1.5708}, {-1.5, 0.5, -1.5708}, {0.0, -2.0, 0.3}};

@@ -21,7 +21,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
 
 namespace ringlet {
 namespace {
@@ -52,7 +52,7 @@ class VisionCli : public ::testing::Test {
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("ringlet-vision-cli-" + std::to_string(::getpid()));
     fs::create_directories(dir_);
-    sim::CameraRenderer renderer(sim::load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"), sim::CameraSpec{}, 3);
+    sim_hal::CameraRenderer renderer(sim_hal::load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"), sim_hal::CameraSpec{}, 3);
     // 1.5 m behind the ball (0.6, −0.3) looking along −x: the ball, the centre circle and the
     // centre line are in view.
     renderer.render({2.1, -0.3, -std::acos(0.0)}, {hal::deg_to_rad(yaw_deg_), hal::deg_to_rad(pitch_deg_)});
@@ -83,7 +83,7 @@ class VisionCli : public ::testing::Test {
   fs::path dir_;
   double yaw_deg_ = 5.0;
   double pitch_deg_ = 22.0;
-  sim::FrameTruth truth_;
+  sim_hal::FrameTruth truth_;
 };
 
 TEST_F(VisionCli, RenderedPngGivesLinesAndTheBallNearTheTruth) { expect_lines_and_ball("frame.png"); }

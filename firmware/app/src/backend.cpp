@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "ringlet/sim/collision.hpp"
+#include "ringlet/sim_hal/collision.hpp"
 
 #ifdef RINGLET_HAVE_OPENCV_CAMERA
 #include "ringlet/hal/opencv_camera.hpp"
@@ -13,14 +13,14 @@ namespace ringlet::firmware {
 namespace {
 
 // The world named by sim.world; a file that cannot be read is named with the key that named it.
-sim::World load_world_of(const FirmwareConfig& config) {
+sim_hal::World load_world_of(const FirmwareConfig& config) {
   try {
-    return sim::load_world(config.world);
-  } catch (const sim::WorldError& e) {
+    return sim_hal::load_world(config.world);
+  } catch (const sim_hal::WorldError& e) {
     const std::string message = e.what();
     // Errors inside the world file already say "<world>:<line>:"; only add where the key is.
     if (message.rfind(config.world.string() + ": cannot read", 0) != 0) throw;
-    throw sim::WorldError(config.positions.at("sim.world") + ": sim.world: " + message);
+    throw sim_hal::WorldError(config.positions.at("sim.world") + ": sim.world: " + message);
   }
 }
 
@@ -28,18 +28,18 @@ sim::World load_world_of(const FirmwareConfig& config) {
 
 std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config) {
   if (config.backend == "sim") {
-    sim::World world = load_world_of(config);
+    sim_hal::World world = load_world_of(config);
     // Checked here, not only in SimRobot, so that the message names both places: the world's
     // start line and the configuration's robot radius.
-    if (sim::disc_collides(world, sim::Vec2{world.start.x, world.start.y}, config.sim.robot_radius)) {
+    if (sim_hal::disc_collides(world, sim_hal::Vec2{world.start.x, world.start.y}, config.sim.robot_radius)) {
       std::ostringstream s;
       s << config.world.string() << ':' << world.start_line << ": start pose (" << world.start.x << ", "
         << world.start.y << ") collides with an obstacle or the bounds for a robot of radius "
         << config.sim.robot_radius << " m (sim.robot_radius, " << config.positions.at("sim.robot_radius") << ")";
-      throw sim::WorldError(s.str());
+      throw sim_hal::WorldError(s.str());
     }
     try {
-      return std::make_unique<sim::SimRobot>(std::move(world), config.sim);
+      return std::make_unique<sim_hal::SimRobot>(std::move(world), config.sim);
     } catch (const std::invalid_argument& e) {
       throw ConfigError(config.positions.at("sim") + ": sim: " + e.what());
     }
@@ -87,7 +87,7 @@ std::unique_ptr<vision::VisionPipeline> make_vision(const FirmwareConfig& config
 
 std::vector<behaviour::Waypoint> mission_goals(const hal::Robot& robot) {
   std::vector<behaviour::Waypoint> goals;
-  if (const auto* s = dynamic_cast<const sim::SimRobot*>(&robot)) {
+  if (const auto* s = dynamic_cast<const sim_hal::SimRobot*>(&robot)) {
     for (const auto& g : s->world().goals) goals.push_back({g.x, g.y});
   }
   return goals;

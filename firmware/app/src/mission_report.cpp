@@ -4,7 +4,7 @@
 #include <csignal>
 #include <cstdio>
 
-#include "ringlet/sim/world_svg.hpp"
+#include "ringlet/sim_hal/world_svg.hpp"
 
 namespace ringlet::firmware {
 
@@ -208,14 +208,14 @@ nlohmann::json summary_json(const MissionSummary& s) {
 bool write_picture(std::ostream& out, const FirmwareStack& stack, const MissionSummary& s) {
   const auto* sim = stack.sim_robot();
   if (sim == nullptr) return false;
-  std::vector<sim::Vec2> collisions;
+  std::vector<sim_hal::Vec2> collisions;
   for (const auto& c : stack.telemetry().collision_points()) collisions.push_back({c.x, c.y});
   char caption[256];
   std::snprintf(caption, sizeof caption, "%s: %zu/%zu goals in %.1f s, %.1f m, %llu collisions (seed %llu)",
                 s.world.c_str(), s.goals_reached, s.goal_count, s.mission_seconds, s.distance_m,
                 static_cast<unsigned long long>(s.collisions), static_cast<unsigned long long>(s.seed));
-  sim::write_world_svg(out, sim->world(),
-                       sim::RunOverlay{stack.telemetry().trajectory(), collisions, s.goals_reached, caption});
+  sim_hal::write_world_svg(out, sim->world(),
+                       sim_hal::RunOverlay{stack.telemetry().trajectory(), collisions, s.goals_reached, caption});
   return true;
 }
 

@@ -46,7 +46,7 @@ constexpr std::size_t kWhiteboardGenerations = 64;
 FirmwareStack::FirmwareStack(const FirmwareConfig& config)
     : config_(config),
       robot_(make_robot(config_)),
-      sim_(dynamic_cast<const sim::SimRobot*>(robot_.get())),
+      sim_(dynamic_cast<const sim_hal::SimRobot*>(robot_.get())),
       board_(kWhiteboardGenerations),
       fsm_status_log_(std::make_unique<FsmStatusLog>()),
       mission_(mission_goals(*robot_), config_.goal_tolerance, config_.follower),

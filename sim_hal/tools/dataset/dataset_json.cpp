@@ -2,7 +2,7 @@
 // the top-left corner of the top-left pixel (hal/camera_geometry.hpp's convention).
 #include "dataset_json.hpp"
 
-namespace ringlet::sim::dataset {
+namespace ringlet::sim_hal::dataset {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -83,4 +83,4 @@ Json frame_json(const FrameRecord& record, const CameraRenderer& renderer) {
   return j;
 }
 
-}  // namespace ringlet::sim::dataset
+}  // namespace ringlet::sim_hal::dataset

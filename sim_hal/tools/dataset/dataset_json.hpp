@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
 
-namespace ringlet::sim::dataset {
+namespace ringlet::sim_hal::dataset {
 
 struct FrameRecord {
   int index = 0;
@@ -19,4 +19,4 @@ struct FrameRecord {
 
 [[nodiscard]] nlohmann::ordered_json frame_json(const FrameRecord& record, const CameraRenderer& renderer);
 
-}  // namespace ringlet::sim::dataset
+}  // namespace ringlet::sim_hal::dataset

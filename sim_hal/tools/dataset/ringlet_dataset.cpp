@@ -32,8 +32,8 @@
 #include <vector>
 
 #include "dataset_json.hpp"
-#include "ringlet/sim/camera_renderer.hpp"
-#include "ringlet/sim/collision.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
+#include "ringlet/sim_hal/collision.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/read_file.hpp"
 #include "ringlet/hal/yuv.hpp"
@@ -42,7 +42,7 @@
 namespace {
 
 using namespace ringlet;
-using namespace ringlet::sim;
+using namespace ringlet::sim_hal;
 
 /// Bumped whenever the frames a (seed, index) gives change: frames of different generator
 /// versions are different frames. 1: one stream for the whole run (a run was a prefix of any

@@ -15,7 +15,7 @@
 #include "ringlet/executive/realtime.hpp"
 #include "ringlet/executive/task_table.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
-#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
 
 namespace ringlet::firmware {
 
@@ -78,7 +78,7 @@ struct FirmwareConfig {
   ConfigPositions positions;        // where each key was written in it
   std::string backend = "sim";      // robot.backend
   std::filesystem::path world;      // sim.world, resolved relative to the config file
-  sim::SimConfig sim{};             // sim.* (its period and seed come from executive/sim)
+  sim_hal::SimConfig sim{};             // sim.* (its period and seed come from executive/sim)
   behaviour::MoveToWaypointParams follower{};
   double goal_tolerance = 0.3;      // mission.goal_tolerance_m
   double timeout_s = 300.0;         // mission.timeout_s: schedule time before giving up

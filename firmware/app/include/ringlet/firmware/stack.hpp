@@ -22,7 +22,7 @@
 #include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/hal/virtual_clock.hpp"
-#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
 #include "ringlet/whiteboard/whiteboard.hpp"
 
 namespace ringlet::firmware {
@@ -30,7 +30,7 @@ namespace ringlet::firmware {
 class FirmwareStack {
  public:
   /// Loads the world (sim backend), builds the robot, tasks and executive. Throws
-  /// sim::WorldError, ConfigError or executive::TableError on bad input.
+  /// sim_hal::WorldError, ConfigError or executive::TableError on bad input.
   explicit FirmwareStack(const FirmwareConfig& config);
   ~FirmwareStack();
   FirmwareStack(const FirmwareStack&) = delete;
@@ -55,7 +55,7 @@ class FirmwareStack {
   [[nodiscard]] hal::Camera* camera() noexcept { return camera_; }
   [[nodiscard]] const VisionTask* vision() const noexcept { return vision_task_ ? &*vision_task_ : nullptr; }
   /// The simulated robot when robot.backend is "sim", else null.
-  [[nodiscard]] const sim::SimRobot* sim_robot() const noexcept { return sim_; }
+  [[nodiscard]] const sim_hal::SimRobot* sim_robot() const noexcept { return sim_; }
 
   /// Frames in `seconds` of schedule time (rounded up).
   [[nodiscard]] std::uint64_t frames_for(double seconds) const noexcept;
@@ -63,7 +63,7 @@ class FirmwareStack {
  private:
   FirmwareConfig config_;
   std::unique_ptr<hal::Robot> robot_;
-  const sim::SimRobot* sim_ = nullptr;
+  const sim_hal::SimRobot* sim_ = nullptr;
   hal::VirtualClock virtual_clock_;
   hal::MonotonicClock monotonic_clock_;
   hal::ThreadStopwatch stopwatch_;

@@ -11,7 +11,7 @@
 #include "ringlet/firmware/task_costs.hpp"
 #include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/hal/robot.hpp"
-#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "ringlet/whiteboard/whiteboard.hpp"
 
@@ -28,7 +28,7 @@ using hal::Nanos;
 /// that true ball as the BallBelief, marked `simulated` (with a camera, vision posts it).
 class SenseTask final : public executive::Task {
  public:
-  SenseTask(hal::Sensors& sensors, CycleState& state, wb::Whiteboard& board, const sim::SimRobot* truth,
+  SenseTask(hal::Sensors& sensors, CycleState& state, wb::Whiteboard& board, const sim_hal::SimRobot* truth,
             bool post_true_ball) noexcept
       : sensors_(sensors), state_(state), board_(board), truth_(truth), post_true_ball_(post_true_ball) {}
   void run(const executive::TaskContext& ctx) noexcept override;
@@ -38,7 +38,7 @@ class SenseTask final : public executive::Task {
   hal::Sensors& sensors_;
   CycleState& state_;
   wb::Whiteboard& board_;
-  const sim::SimRobot* truth_;
+  const sim_hal::SimRobot* truth_;
   bool post_true_ball_;
 };
 

@@ -7,9 +7,9 @@
 #include <ostream>
 #include <string>
 
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 const std::string kTestWorlds = RINGLET_TEST_WORLDS_DIR;

@@ -2,9 +2,9 @@
 // Geometric queries against a World. Allocation-free: they run inside the cycle.
 #include <limits>
 
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 
 /// Distance along a ray from `origin` with heading `bearing` (the geometry.hpp convention: 0 = +y,
 /// pi/2 = +x) to the first obstacle or wall, or +infinity if nothing is hit within `max_range`.

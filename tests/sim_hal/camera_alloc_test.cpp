@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "allocation_counter.hpp"
-#include "ringlet/sim/camera_renderer.hpp"
-#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 using ringlet::test::AllocationCounter;

@@ -11,10 +11,10 @@
 
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/geometry.hpp"
-#include "ringlet/sim/camera_truth.hpp"
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/camera_truth.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 
 /// The camera being simulated: intrinsics (image size included) and where it sits on the head.
 struct CameraSpec {

@@ -11,11 +11,11 @@
 #include <random>
 
 #include "ringlet/hal/robot.hpp"
-#include "ringlet/sim/kinematics.hpp"
-#include "ringlet/sim/sim_camera.hpp"
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/kinematics.hpp"
+#include "ringlet/sim_hal/sim_camera.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 
 struct SimConfig {
   hal::Nanos period{10'000'000};  // one executive period per read()

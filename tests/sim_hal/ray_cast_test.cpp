@@ -6,11 +6,11 @@
 #include <limits>
 #include <numbers>
 
-#include "ringlet/sim/collision.hpp"
-#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/sim_hal/collision.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
 #include "sim_test_support.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 using test::box_world;

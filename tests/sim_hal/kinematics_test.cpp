@@ -5,9 +5,9 @@
 #include <limits>
 #include <numbers>
 
-#include "ringlet/sim/kinematics.hpp"
+#include "ringlet/sim_hal/kinematics.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 using hal::Pose2;

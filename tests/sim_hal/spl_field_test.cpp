@@ -8,9 +8,9 @@
 #include <limits>
 #include <numbers>
 
-#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 World spl_field() { return load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"); }

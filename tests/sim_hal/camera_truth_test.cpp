@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "camera_test_support.hpp"
-#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 constexpr double kPitch = 0.3;

@@ -6,9 +6,9 @@
 #include <ostream>
 #include <span>
 
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 
 struct RunOverlay {
   std::span<const hal::Pose2> trajectory;  // in driving order

@@ -14,7 +14,7 @@
 
 #include "ringlet/hal/geometry.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 
 struct Vec2 {
   double x = 0.0;

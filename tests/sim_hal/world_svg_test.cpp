@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "ringlet/sim/world_svg.hpp"
+#include "ringlet/sim_hal/world_svg.hpp"
 #include "sim_test_support.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 std::size_t count(const std::string& text, const std::string& needle) {

@@ -4,9 +4,9 @@
 #include <cstdint>
 
 #include "ringlet/hal/sensors.hpp"
-#include "ringlet/sim/world.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
-namespace ringlet::sim::test {
+namespace ringlet::sim_hal::test {
 
 /// An empty walled rectangle from (0, 0) to (width, height) with one goal, robot at `start`.
 inline World box_world(double width, double height, hal::Pose2 start) {
@@ -69,4 +69,4 @@ class Fnv1a {
   std::uint64_t hash_ = 0xcbf29ce484222325ULL;
 };
 
-}  // namespace ringlet::sim::test
+}  // namespace ringlet::sim_hal::test

@@ -7,10 +7,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
 #include "sim_test_support.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 World spl_field() { return load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"); }

@@ -7,9 +7,9 @@
 #include <numbers>
 
 #include "ringlet/hal/camera_geometry.hpp"
-#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
 
-namespace ringlet::sim::test {
+namespace ringlet::sim_hal::test {
 
 /// A 10 m x 8 m carpet centred on the origin, no markings, no obstacles, no sun stripes.
 inline World open_field() {
@@ -51,4 +51,4 @@ inline PixelLabel label_at(const CameraRenderer& r, PixelIndex p) {
                     static_cast<std::size_t>(p.u)];
 }
 
-}  // namespace ringlet::sim::test
+}  // namespace ringlet::sim_hal::test

@@ -6,7 +6,7 @@
 #include "ringlet/hal/actuators.hpp"
 #include "ringlet/hal/geometry.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 
 struct CarLimits {
   double max_speed = 1.0;           // m/s, |v| <= max_speed

@@ -20,9 +20,9 @@
 #include <vector>
 
 #include "ringlet/hal/camera.hpp"
-#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 
 struct SimCameraConfig {
   bool enabled = false;

@@ -5,11 +5,11 @@
 #include <vector>
 
 #include "camera_test_support.hpp"
-#include "ringlet/sim/camera_renderer.hpp"
+#include "ringlet/sim_hal/camera_renderer.hpp"
 #include "ringlet/hal/yuv.hpp"
 #include "sim_test_support.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 using test::bgr_at;

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "ringlet/sim/sim_robot.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 namespace {
 
 const std::string kCourtyard = std::string(RINGLET_SIM_WORLDS_DIR) + "/courtyard.world";

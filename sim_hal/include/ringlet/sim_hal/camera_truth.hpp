@@ -9,7 +9,7 @@
 #include "ringlet/hal/geometry.hpp"
 #include "ringlet/hal/sensors.hpp"
 
-namespace ringlet::sim {
+namespace ringlet::sim_hal {
 
 /// One visible stretch of a straight marking: consecutive ground samples (about 1 cm apart
 /// along the line's middle) that are all visible. End points are the first and last such sample.
