@@ -102,10 +102,11 @@ class WorldParser {
     } else if (s.keyword == "ball") {
       ball(s);
     } else if (s.keyword == "goal") {
-      goal(s);
+      fail(s.line, "goal: goals belong to the mission, not the world: list them under [mission] goals in the "
+                   "firmware configuration");
     } else {
       fail(s.line, "unknown keyword '" + std::string(s.keyword) +
-                       "' (expected name, bounds, start, circle, polygon, marking, ring, lighting, ball or goal)");
+                       "' (expected name, bounds, start, circle, polygon, marking, ring, lighting or ball)");
     }
   }
 
@@ -324,11 +325,6 @@ class WorldParser {
     ball_line_ = s.line;
   }
 
-  void goal(const Statement& s) {
-    expect_args(s, 2, 2, "x y");
-    world_.goals.push_back(point(s, 0, "x", "y", ""));
-  }
-
   // --- whole-file checks ------------------------------------------------------------------------
 
   void check_complete(int eof_line) const {
@@ -337,7 +333,6 @@ class WorldParser {
     }
     if (bounds_line_ == 0) fail(eof_line, "end of file: missing 'bounds <xmin> <ymin> <xmax> <ymax>' (required once)");
     if (start_line_ == 0) fail(eof_line, "end of file: missing 'start <x> <y> <heading_deg>' (required once)");
-    if (world_.goals.empty()) fail(eof_line, "end of file: missing 'goal <x> <y>' (at least one is required)");
   }
 
   void check_inside_bounds() const {

@@ -36,7 +36,7 @@ double pixels_per_metre(const World& world) {
 
 class SvgPicture {
  public:
-  SvgPicture(const World& world, const RunOverlay& overlay)
+  SvgPicture(const World& world, const hal::RunPicture& overlay)
       : world_(world), overlay_(overlay), scale_(pixels_per_metre(world)) {}
 
   std::string draw() {
@@ -257,10 +257,10 @@ class SvgPicture {
 
   void goals() {
     const double r = std::max(8.0, kGoalRadiusM * scale_);
-    for (std::size_t i = 0; i < world_.goals.size(); ++i) {
+    for (std::size_t i = 0; i < overlay_.goals.size(); ++i) {
       const bool reached = i < overlay_.goals_reached;
-      const double cx = px(world_.goals[i].x);
-      const double cy = py(world_.goals[i].y);
+      const double cx = px(overlay_.goals[i].x);
+      const double cy = py(overlay_.goals[i].y);
       std::string style = reached ? std::string("fill=\"") + kGoalColour + '"' : std::string("fill=\"#ffffff\"");
       style += std::string(" stroke=\"") + kGoalColour + "\" stroke-width=\"2\"";
       circle(reached ? "goal reached" : "goal", cx, cy, r, style);
@@ -275,7 +275,7 @@ class SvgPicture {
   }
 
   void collisions() {
-    for (const Vec2& c : overlay_.collisions) cross_mark("collision", px(c.x), py(c.y), 6.0);
+    for (const hal::WorldPoint& c : overlay_.collisions) cross_mark("collision", px(c.x), py(c.y), 6.0);
   }
 
   void footer() {
@@ -324,18 +324,18 @@ class SvgPicture {
   }
 
   const World& world_;
-  const RunOverlay& overlay_;
+  const hal::RunPicture& overlay_;
   double scale_;  // pixels per metre
   std::string text_;
 };
 
 }  // namespace
 
-void write_world_svg(std::ostream& out, const World& world, const RunOverlay& overlay) {
+void write_world_svg(std::ostream& out, const World& world, const hal::RunPicture& overlay) {
   out << SvgPicture(world, overlay).draw();
 }
 
-void write_world_svg(const std::filesystem::path& path, const World& world, const RunOverlay& overlay) {
+void write_world_svg(const std::filesystem::path& path, const World& world, const hal::RunPicture& overlay) {
   const std::string picture = SvgPicture(world, overlay).draw();
   const auto fail = [&path](int error) {
     const std::string reason = error != 0 ? std::generic_category().message(error) : "I/O error";

@@ -1,5 +1,6 @@
 #pragma once
-// Everything the robot senses in one cycle, as plain fixed-size data: reading it never allocates.
+// Everything the robot senses in one cycle, as plain fixed-size data (reading it never allocates),
+// and the interface of whatever senses it.
 #include <array>
 #include <cstdint>
 
@@ -64,6 +65,15 @@ struct SensorFrame {
   PowerState power{};
   LaserScan laser{};
   bool collided = false;  // the base's bumper: touching an obstacle right now
+};
+
+class Sensors {
+ public:
+  virtual ~Sensors() = default;
+  /// Fills `out` with this cycle's readings. Called once per executive frame by the sense task;
+  /// a lockstep simulator advances its world by exactly one period here. Returns false when the
+  /// hardware could not be read (the frame's readings are then stale and marked invalid).
+  virtual bool read(SensorFrame& out) noexcept = 0;
 };
 
 }  // namespace ringlet::hal

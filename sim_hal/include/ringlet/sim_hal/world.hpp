@@ -1,7 +1,7 @@
 #pragma once
 // The simulated world: bounds, obstacles (circles and polygons), optional field markings (lines
-// and rings), the carpet's lighting, a ball,
-// the start pose and the ordered goal sequence. Loaded from the versioned text format documented
+// and rings), the carpet's lighting, a ball and
+// the start pose. (Goals are not the world's: they belong to the mission's configuration.) Loaded from the versioned text format documented
 // in sim_hal/README.md. Loading is all-or-nothing: on any error a WorldError("file:line: message")
 // is thrown and no World exists.
 #include <cstdint>
@@ -82,7 +82,6 @@ struct World {
   std::vector<Ring> rings;
   Lighting lighting{};
   std::optional<Ball> ball;
-  std::vector<Vec2> goals;  // visited in order
 };
 
 class WorldError : public std::runtime_error {

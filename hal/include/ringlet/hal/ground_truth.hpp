@@ -1,0 +1,46 @@
+#pragma once
+// What really happened in a run, for scoring it and drawing it — never for the controller. Only a
+// simulator knows it; a real board or a replayed log has none (hal::Robot::ground_truth() is
+// null), and the firmware's report then leaves the truth columns out.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <span>
+#include <string_view>
+
+#include "ringlet/hal/geometry.hpp"
+
+namespace ringlet::hal {
+
+/// A point in the world frame (m).
+struct WorldPoint {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+/// What the controller did, to be drawn over the world.
+struct RunPicture {
+  std::span<const Pose2> trajectory;      // in driving order
+  std::span<const WorldPoint> collisions;
+  std::span<const WorldPoint> goals;      // the mission's, in order
+  std::size_t goals_reached = 0;          // the first N goals are drawn as reached
+  std::string_view caption;               // one line under the picture
+};
+
+class GroundTruth {
+ public:
+  virtual ~GroundTruth() = default;
+  /// The world's name (its file name), for the report.
+  [[nodiscard]] virtual std::string_view world_name() const noexcept = 0;
+  /// Where the world's ball really is in the robot frame now (none: the world has no ball).
+  [[nodiscard]] virtual std::optional<RobotPoint> ball_in_robot_frame() const noexcept = 0;
+  /// Contact events between the robot and anything solid so far.
+  [[nodiscard]] virtual std::uint64_t collisions() const noexcept = 0;
+  /// Path length really driven so far (m).
+  [[nodiscard]] virtual double distance_travelled() const noexcept = 0;
+  /// The world as an SVG picture with the run drawn over it.
+  virtual void write_picture(std::ostream& out, const RunPicture& run) const = 0;
+};
+
+}  // namespace ringlet::hal
