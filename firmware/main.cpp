@@ -22,7 +22,6 @@
 #include "ringlet/firmware/output_file.hpp"
 #include "ringlet/firmware/schedule_report.hpp"
 #include "ringlet/firmware/stack.hpp"
-#include "ringlet/sim_hal/world.hpp"
 
 namespace {
 
@@ -95,9 +94,9 @@ int main(int argc, char** argv) {
       ->type_name("S");
   auto* rt = app.add_flag("--realtime", realtime, "pace the cycle by the real clock (clock_nanosleep)");
   app.add_flag("--lockstep", lockstep, "run on the virtual clock as fast as possible (simulation)")->excludes(rt);
-  app.add_option("--seed", seed_text, "override sim.seed (0 to 2^64-1)")->type_name("N");
+  app.add_option("--seed", seed_text, "override the backend's seed, e.g. sim.seed (0 to 2^64-1)")->type_name("N");
   app.add_option("-r,--report", report_path, "write the mission summary and timing report as JSON")->type_name("FILE");
-  app.add_option("--svg", svg_path, "write a picture of the world and the trajectory (sim backend)")->type_name("FILE");
+  app.add_option("--svg", svg_path, "write a picture of the world and the trajectory (backends with ground truth: sim)")->type_name("FILE");
   app.add_flag("--check", check_only, "validate the configuration and world, print the task table, and exit");
   try {
     app.parse(argc, argv);
@@ -120,19 +119,20 @@ int main(int argc, char** argv) {
     auto cfg = firmware::load_config(config_path);
     if (realtime) cfg.clock = firmware::ClockMode::kRealtime;
     if (lockstep) cfg.clock = firmware::ClockMode::kLockstep;
-    if (seed) cfg.sim.seed = *seed;
+    if (seed) cfg.seed_override = *seed;
     if (duration > 0.0) {
       // The recording buffers are sized for the whole run at start-up: refuse what would not fit.
       if (const std::string why = firmware::run_length_problem(cfg, duration); !why.empty()) {
         throw firmware::UsageError("--duration: " + why);
       }
-      cfg.timeout_s = duration;
+      cfg.mission.timeout_s = duration;
     }
 
     firmware::FirmwareStack stack(cfg);
     print_table(cfg);
     if (check_only) {
-      std::printf("configuration OK: %s, world %s\n", config_path.c_str(), cfg.world.c_str());
+      std::printf("configuration OK: %s, %s backend (%s)\n", config_path.c_str(), cfg.backend.c_str(),
+                  cfg.backend_settings ? cfg.backend_settings->source_name().c_str() : "no settings");
       return g_interrupt.load() ? signal_exit_code() : 0;
     }
 
@@ -145,7 +145,7 @@ int main(int argc, char** argv) {
     g_executive_stop.store(&stack.executive().stop_flag());
     if (g_interrupt.load()) stack.executive().request_stop();  // a signal arrived during start-up
     const auto outcome = [&] {
-      auto o = firmware::run_mission(stack, cfg.timeout_s, g_interrupt, std::cerr);
+      auto o = firmware::run_mission(stack, cfg.mission.timeout_s, g_interrupt, std::cerr);
       o.signal = g_signal.load();
       return o;
     }();
@@ -194,9 +194,6 @@ int main(int argc, char** argv) {
     std::cerr << "ringlet: " << e.what() << '\n';
     return 2;
   } catch (const firmware::ConfigError& e) {
-    std::cerr << "ringlet: " << e.what() << '\n';
-    return 2;
-  } catch (const sim_hal::WorldError& e) {
     std::cerr << "ringlet: " << e.what() << '\n';
     return 2;
   } catch (const executive::TableError& e) {

@@ -61,6 +61,14 @@ void SimRobot::write(const hal::ActuatorCommand& cmd) noexcept {
   command_ = cmd;
 }
 
+bool SimRobot::read(hal::BallSighting& out) noexcept {
+  const auto ball = true_ball_in_robot_frame();
+  out.stamp = time_;
+  out.seen = ball.has_value();
+  out.at = ball.value_or(hal::RobotPoint{});
+  return true;
+}
+
 std::optional<hal::RobotPoint> SimRobot::true_ball_in_robot_frame() const noexcept {
   if (!world_.ball) return std::nullopt;
   return hal::to_robot_frame(state_.pose, world_.ball->position.x, world_.ball->position.y);

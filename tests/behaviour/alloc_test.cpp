@@ -25,9 +25,12 @@ TEST(LlfsmAllocation, TurnsDoNotAllocate) {
   llfsm::WhiteboardFsmBus bus(board);
   llfsm::Schedule sched(clock, &bus);
   BallTracker tracker(board);
-  const std::array<Waypoint, 2> goals_xy{{{5.0, 0.0}, {0.0, 0.0}}};
-  WaypointMission goals(goals_xy, 0.3, MoveToWaypointParams{});
-  Mission mission(board, goals);
+  wb::MissionGoals goals{};
+  goals.count = 2;
+  goals.x[0] = 5.0;
+  goals.tolerance = 0.3;
+  board.post(goals);
+  Mission mission(board, MoveToWaypointParams{});
   Safety safety(board, 0.5, 0.8, 300);
   sched.add(tracker);
   sched.add(mission);

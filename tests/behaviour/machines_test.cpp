@@ -21,7 +21,10 @@ using namespace std::chrono_literals;
 static_assert(BallTracker::kRequires.size() == 1 && BallTracker::kRequires[0] == "BallBelief");
 static_assert(BallTracker::kProvides.size() == 1 && BallTracker::kProvides[0] == "HeadCommand");
 static_assert(Safety::kRequires[0] == "LaserSummary" && Safety::kProvides[0] == "MotionCommand");
-static_assert(Mission::kRequires[0] == "Pose" && Mission::kProvides[0] == "MotionCommand");
+static_assert(Mission::kRequires.size() == 2 && Mission::kRequires[0] == "Pose" &&
+              Mission::kRequires[1] == "MissionGoals");
+static_assert(Mission::kProvides.size() == 2 && Mission::kProvides[0] == "MotionCommand" &&
+              Mission::kProvides[1] == "MissionStatus");
 
 wb::LaserSummary laser(double nearest) {
   wb::LaserSummary l{};
@@ -36,9 +39,17 @@ struct MachinesTest : ::testing::Test {
   llfsm::Schedule sched{clock};
   BallTracker tracker{board};
   // A square of 2 m sides from the origin, back home.
-  const std::array<Waypoint, 4> square{{{2.0, 0.0}, {2.0, 2.0}, {0.0, 2.0}, {0.0, 0.0}}};
-  WaypointMission goals{square, 0.3, MoveToWaypointParams{}};
-  Mission mission{board, goals};
+  Mission mission{board, MoveToWaypointParams{}};
+
+  // A square of 2 m sides from the origin, back home.
+  void post_square() {
+    wb::MissionGoals goals{};
+    goals.count = 4;
+    goals.x = {2.0, 2.0, 0.0, 0.0};
+    goals.y = {0.0, 2.0, 2.0, 0.0};
+    goals.tolerance = 0.3;
+    board.post(goals);
+  }
   Safety safety{board, 0.5, 0.8, 300};  // stop, release (m), hold (ms)
 };
 
@@ -67,8 +78,9 @@ TEST_F(MachinesTest, BallTrackerPointsTheHeadAtTheBall) {
 TEST_F(MachinesTest, SafetyStopsWithHysteresisAndHoldsTheMission) {
   sched.add(mission);
   sched.add(safety, 2);
-  const std::string_view tasks[] = {"Pose", "LaserSummary", "BallBelief"};
+  const std::string_view tasks[] = {"Pose", "LaserSummary", "BallBelief", "MissionGoals"};
   EXPECT_TRUE(llfsm::check_providers(sched, tasks).ok());
+  post_square();
   wb::Pose pose{};
   pose.valid = true;
   board.post(pose);
@@ -106,6 +118,7 @@ TEST_F(MachinesTest, SafetyStopsWithHysteresisAndHoldsTheMission) {
 
 TEST_F(MachinesTest, MissionAdvancesThroughItsGoals) {
   sched.add(mission);
+  post_square();
   sched.run_turn(0ns);
   EXPECT_EQ(mission.current_state_name(), "WaitForPose");
   wb::Pose pose{};
@@ -123,7 +136,8 @@ TEST_F(MachinesTest, MissionAdvancesThroughItsGoals) {
   sched.run_turn(4ms);  // Done's OnEntry: the stop
   EXPECT_EQ(mission.current_state_name(), "Done");
   EXPECT_EQ(mission.local_announced(), 4u);
-  EXPECT_TRUE(goals.complete());
+  const wb::MissionStatus status = board.get<wb::MissionStatus>();
+  EXPECT_TRUE(status.done);
   EXPECT_TRUE(board.get<wb::MotionCommand>().stop);
 }
 

@@ -7,129 +7,14 @@
 
 #include <toml++/toml.h>
 
+#include "config_section.hpp"
+
 #include "ringlet/hal/geometry.hpp"
+#include "ringlet/firmware/backend_factory.hpp"
 #include "ringlet/hal/read_file.hpp"
 
 namespace ringlet::firmware {
 namespace {
-
-std::string where(const std::string& file, const toml::source_region& r) {
-  std::ostringstream s;
-  s << file << ':' << r.begin.line << ':' << r.begin.column;
-  return s.str();
-}
-
-// One TOML table with the keys this firmware knows. Every read checks type and range; unknown
-// keys are refused at the end so that typos surface.
-class Section {
- public:
-  Section(const toml::table* table, std::string name, const std::string& file, const toml::source_region& fallback)
-      : table_(table), name_(std::move(name)), file_(file), fallback_(fallback) {}
-
-  [[nodiscard]] bool present() const { return table_ != nullptr; }
-
-  double number(const std::string& key, double fallback, double lo, double hi) {
-    const toml::node* n = find(key);
-    if (n == nullptr) return fallback;
-    double v = 0.0;
-    if (const auto* i = n->as_integer()) {
-      v = static_cast<double>(i->get());
-    } else if (const auto* f = n->as_floating_point()) {
-      v = f->get();
-    } else {
-      fail(*n, key, "must be a number");
-    }
-    if (!std::isfinite(v) || v < lo || v > hi) {
-      std::ostringstream s;
-      s << "must be between " << lo << " and " << hi << ", got " << v;
-      fail(*n, key, s.str());
-    }
-    return v;
-  }
-
-  int integer(const std::string& key, int fallback, int lo, int hi) {
-    const toml::node* n = find(key);
-    if (n == nullptr) return fallback;
-    const auto* i = n->as_integer();
-    if (i == nullptr) fail(*n, key, "must be an integer");
-    if (i->get() < lo || i->get() > hi) {
-      fail(*n, key, "must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
-                        std::to_string(i->get()));
-    }
-    return static_cast<int>(i->get());
-  }
-
-  std::uint64_t unsigned_integer(const std::string& key, std::uint64_t fallback) {
-    const toml::node* n = find(key);
-    if (n == nullptr) return fallback;
-    const auto* i = n->as_integer();
-    if (i == nullptr || i->get() < 0) fail(*n, key, "must be a non-negative integer");
-    return static_cast<std::uint64_t>(i->get());
-  }
-
-  bool boolean(const std::string& key, bool fallback) {
-    const toml::node* n = find(key);
-    if (n == nullptr) return fallback;
-    const auto* b = n->as_boolean();
-    if (b == nullptr) fail(*n, key, "must be true or false");
-    return b->get();
-  }
-
-  std::string text(const std::string& key, const std::string& fallback, const std::vector<std::string>& allowed = {}) {
-    const toml::node* n = find(key);
-    if (n == nullptr) return fallback;
-    const auto* s = n->as_string();
-    if (s == nullptr) fail(*n, key, "must be a string");
-    if (!allowed.empty()) {
-      bool ok = false;
-      std::string list;
-      for (const auto& a : allowed) {
-        ok = ok || a == s->get();
-        list += (list.empty() ? "\"" : ", \"") + a + "\"";
-      }
-      if (!ok) fail(*n, key, "must be one of " + list + ", got \"" + s->get() + "\"");
-    }
-    return s->get();
-  }
-
-  const toml::node* find(const std::string& key) {
-    used_.insert(key);
-    return table_ == nullptr ? nullptr : table_->get(key);
-  }
-
-  [[noreturn]] void fail(const toml::node& n, const std::string& key, const std::string& message) const {
-    throw ConfigError(where(file_, n.source()) + ": " + qualified(key) + ": " + message);
-  }
-  [[noreturn]] void fail_missing(const std::string& key, const std::string& message) const {
-    const auto& region = table_ != nullptr ? table_->source() : fallback_;
-    throw ConfigError(where(file_, region) + ": " + qualified(key) + ": " + message);
-  }
-
-  void reject_unknown() const {
-    if (table_ == nullptr) return;
-    for (auto&& [k, v] : *table_) {
-      if (!used_.contains(std::string(k.str()))) {
-        throw ConfigError(where(file_, v.source()) + ": " + qualified(std::string(k.str())) + ": unknown key" +
-                          (name_.empty() ? "" : " in [" + name_ + "]"));
-      }
-    }
-  }
-
- private:
-  [[nodiscard]] std::string qualified(const std::string& key) const { return name_.empty() ? key : name_ + "." + key; }
-
-  const toml::table* table_;
-  std::string name_;
-  const std::string& file_;
-  const toml::source_region& fallback_;
-  std::set<std::string> used_;
-};
-
-Section section(const toml::table& root, Section& top, const std::string& name, const std::string& file) {
-  const toml::node* n = top.find(name);
-  if (n != nullptr && n->as_table() == nullptr) top.fail(*n, name, "must be a table, e.g. [" + name + "]");
-  return Section(n != nullptr ? n->as_table() : nullptr, name, file, root.source());
-}
 
 void read_tasks(Section& exec, FirmwareConfig& cfg, const std::string& file, const toml::source_region& fallback) {
   const toml::node* n = exec.find("tasks");
@@ -207,6 +92,124 @@ ConfigPositions record_positions(const toml::table& root, const std::string& fil
   return positions;
 }
 
+
+// One small reader per section. Each read falls back to the setting's current value, so the
+// defaults are the structs' (config.hpp).
+
+void read_robot(Section& robot, FirmwareConfig& cfg) {
+  cfg.backend = robot.text("backend", cfg.backend, backend_names());
+  robot.reject_unknown();
+}
+
+void read_executive(Section& exec, FirmwareConfig& cfg, const std::string& file, const toml::source_region& fallback) {
+  auto& e = cfg.executive;
+  e.period = hal::from_micros(exec.integer("period_us", static_cast<int>(e.period.count() / 1000), 1000, 1000000));
+  const bool realtime = cfg.clock == ClockMode::kRealtime;
+  cfg.clock = exec.text("clock", realtime ? "realtime" : "lockstep", {"lockstep", "realtime"}) == "realtime"
+                  ? ClockMode::kRealtime
+                  : ClockMode::kLockstep;
+  e.watchdog_periods = exec.integer("watchdog_periods", e.watchdog_periods, 0, 1000);
+  e.warn_every_frames = exec.integer("warn_every_frames", e.warn_every_frames, 1, 1000000);
+  e.degrade_max_level = exec.integer("degrade_max_level", e.degrade_max_level, 1, 100);
+  e.degrade_recover_after = exec.integer("degrade_recover_after", e.degrade_recover_after, 1, 1000000);
+  e.overrun_on_cpu_time =
+      exec.text("budgets_judged_on", e.overrun_on_cpu_time ? "cpu" : "wall", {"wall", "cpu"}) == "cpu";
+  cfg.realtime.fifo_priority = exec.integer("fifo_priority", cfg.realtime.fifo_priority, 0, 99);
+  cfg.realtime.lock_memory = exec.boolean("lock_memory", cfg.realtime.lock_memory);
+  cfg.realtime.cpu = exec.integer("cpu", cfg.realtime.cpu, -1, 1023);
+  read_tasks(exec, cfg, file, fallback);
+  exec.reject_unknown();
+}
+
+void read_goals(Section& mission, MissionSettings& m) {
+  const toml::node* n = mission.find("goals");
+  if (n == nullptr) mission.fail_missing("goals", "the mission needs its goals: goals = [[x, y], ...] (m, world frame)");
+  const auto* list = n->as_array();
+  if (list == nullptr || list->empty()) mission.fail(*n, "goals", "must be a non-empty array of [x, y] pairs");
+  if (list->size() > MissionSettings::kMaxGoals) {
+    mission.fail(*n, "goals", "has " + std::to_string(list->size()) + " goals; at most " +
+                                  std::to_string(MissionSettings::kMaxGoals) + " are allowed");
+  }
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const toml::node& g = *list->get(i);
+    const auto* pair = g.as_array();
+    const auto coordinate = [&](std::size_t k) -> std::optional<double> {
+      if (pair == nullptr || pair->size() != 2) return std::nullopt;
+      const toml::node& c = *pair->get(k);
+      if (const auto* v = c.as_integer()) return static_cast<double>(v->get());
+      if (const auto* v = c.as_floating_point(); v != nullptr && std::isfinite(v->get())) return v->get();
+      return std::nullopt;
+    };
+    const auto x = coordinate(0);
+    const auto y = coordinate(1);
+    if (!x || !y) mission.fail(g, "goals[" + std::to_string(i) + "]", "must be a pair of finite numbers [x, y]");
+    m.goals.push_back({*x, *y});
+  }
+}
+
+void read_mission(Section& mission, MissionSettings& m) {
+  read_goals(mission, m);
+  m.goal_tolerance = mission.number("goal_tolerance_m", m.goal_tolerance, 0.01, 10.0);
+  m.timeout_s = mission.number("timeout_s", m.timeout_s, 0.01, kMaxRunSeconds);
+}
+
+void read_follower(Section& follower, behaviour::MoveToWaypointParams& f) {
+  f.gain = follower.number("gain", f.gain, 0.0, 100.0);
+  f.max_curvature = follower.number("max_curvature", f.max_curvature, 0.01, 100.0);
+  f.max_speed = follower.number("max_speed", f.max_speed, 0.01, 20.0);
+  f.min_speed = follower.number("min_speed", f.min_speed, 0.0, 20.0);
+  f.full_turn_error =
+      hal::deg_to_rad(follower.number("full_turn_error_deg", hal::rad_to_deg(f.full_turn_error), 1.0, 180.0));
+  f.approach_radius = follower.number("approach_radius_m", f.approach_radius, 0.0, 100.0);
+  if (f.min_speed > f.max_speed) {
+    if (const toml::node* n = follower.find("min_speed")) follower.fail(*n, "min_speed", "must not exceed max_speed");
+    follower.fail_missing("min_speed", "the default min_speed exceeds max_speed; set min_speed");
+  }
+  follower.reject_unknown();
+}
+
+void read_safety(Section& safety, SafetyParams& p) {
+  p.stop_range = safety.number("stop_range_m", p.stop_range, 0.05, 50.0);
+  p.release_range = safety.number("release_range_m", p.release_range, 0.05, 50.0);
+  p.hold_ms = safety.integer("release_after_ms", static_cast<int>(p.hold_ms), 0, 600000);
+  if (p.release_range <= p.stop_range) {
+    if (const toml::node* n = safety.find("release_range_m")) {
+      safety.fail(*n, "release_range_m", "must be larger than stop_range_m (hysteresis)");
+    }
+    safety.fail_missing("release_range_m", "must be larger than stop_range_m (hysteresis)");
+  }
+  safety.reject_unknown();
+}
+
+void read_camera(Section& camera, CameraSettings& c) {
+  c.backend = camera.text("backend", c.backend, {"robot", "opencv"});
+  c.source = camera.text("source", c.source);
+  const int width = camera.integer("width", c.intrinsics.width, 16, 4096);
+  const int height = camera.integer("height", c.intrinsics.height, 16, 4096);
+  if (width % 2 != 0) camera.fail(*camera.find("width"), "width", "must be even (YUYV packs pixel pairs)");
+  c.hfov_deg = camera.number("hfov_deg", c.hfov_deg, 1.0, 179.0);
+  c.vfov_deg = camera.number("vfov_deg", c.vfov_deg, 1.0, 179.0);
+  c.intrinsics = hal::CameraIntrinsics::from_fov(width, height, c.hfov_deg, c.vfov_deg);
+  const bool bgr = c.format == hal::PixelFormat::kBgr8;
+  c.format = camera.text("format", bgr ? "bgr" : "yuyv", {"yuyv", "bgr"}) == "bgr" ? hal::PixelFormat::kBgr8
+                                                                                    : hal::PixelFormat::kYuyv;
+  c.mount.pivot_height = camera.number("pivot_height_m", c.mount.pivot_height, 0.01, 10.0);
+  c.mount.forward = camera.number("forward_m", c.mount.forward, -1.0, 1.0);
+  c.mount.up = camera.number("up_m", c.mount.up, -1.0, 1.0);
+  if (c.backend == "opencv" && c.source.empty()) {
+    camera.fail_missing("source", "the \"opencv\" camera needs a source (a device, a video file or an image folder)");
+  }
+  camera.reject_unknown();
+}
+
+void read_vision(Section& vision, VisionSettings& v, const std::filesystem::path& base_dir) {
+  v.lut = vision.path("lut", base_dir);
+  v.seed = vision.unsigned_integer("seed", v.seed);
+  v.max_trials = vision.integer("max_trials", v.max_trials, 1, 10000);
+  v.skip = vision.integer("skip", v.skip, 1, 1000);
+  vision.reject_unknown();
+}
+
 }  // namespace
 
 FirmwareConfig parse_config(std::string_view text, const std::string& source, const std::filesystem::path& base_dir) {
@@ -219,127 +222,55 @@ FirmwareConfig parse_config(std::string_view text, const std::string& source, co
   FirmwareConfig cfg;
   cfg.source = source;
   Section top(&root, "", source, root.source());
+  const auto in = [&](const std::string& name) { return section(root, top, name, source); };
 
-  Section robot = section(root, top, "robot", source);
-  cfg.backend = robot.text("backend", "sim", {"sim", "can"});
-  robot.reject_unknown();
-
-  Section exec = section(root, top, "executive", source);
-  cfg.executive.period = hal::from_micros(exec.integer("period_us", 10000, 1000, 1000000));
-  cfg.clock = exec.text("clock", "lockstep", {"lockstep", "realtime"}) == "realtime" ? ClockMode::kRealtime
-                                                                                      : ClockMode::kLockstep;
-  cfg.executive.watchdog_periods = exec.integer("watchdog_periods", 5, 0, 1000);
-  cfg.executive.warn_every_frames = exec.integer("warn_every_frames", 100, 1, 1000000);
-  cfg.executive.degrade_max_level = exec.integer("degrade_max_level", 3, 1, 100);
-  cfg.executive.degrade_recover_after = exec.integer("degrade_recover_after", 20, 1, 1000000);
-  cfg.executive.overrun_on_cpu_time = exec.text("budgets_judged_on", "wall", {"wall", "cpu"}) == "cpu";
-  cfg.realtime.fifo_priority = exec.integer("fifo_priority", 0, 0, 99);
-  cfg.realtime.lock_memory = exec.boolean("lock_memory", false);
-  cfg.realtime.cpu = exec.integer("cpu", -1, -1, 1023);
-  read_tasks(exec, cfg, source, root.source());
-  exec.reject_unknown();
-
-  Section sim = section(root, top, "sim", source);
-  if (cfg.backend == "sim") {
-    const std::string world = sim.text("world", "");
-    if (world.empty()) sim.fail_missing("world", "the simulated robot needs a world file (sim.world = \"...\")");
-    cfg.world = std::filesystem::path(world).is_absolute() ? std::filesystem::path(world) : base_dir / world;
-  } else {
-    (void)sim.find("world");
+  Section robot = in("robot");
+  read_robot(robot, cfg);
+  Section exec = in("executive");
+  read_executive(exec, cfg, source, root.source());
+  // Every backend's section is checked when present, so that switching robot.backend never
+  // uncovers old typos; only the chosen backend's settings are kept.
+  for (const std::string& name : backend_names()) {
+    Section backend = in(name);
+    auto settings = read_backend_settings(name, backend, base_dir, cfg);
+    backend.reject_unknown();
+    if (name == cfg.backend) cfg.backend_settings = std::move(settings);
   }
-  auto& s = cfg.sim;
-  s.period = cfg.executive.period;
-  s.seed = sim.unsigned_integer("seed", 1);
-  s.limits.max_speed = sim.number("max_speed", 1.0, 0.01, 20.0);
-  s.limits.max_curvature = sim.number("max_curvature", 2.0, 0.01, 100.0);
-  s.limits.max_acceleration = sim.number("max_acceleration", 1.0, 0.01, 100.0);
-  s.limits.max_curvature_rate = sim.number("max_curvature_rate", 4.0, 0.01, 1000.0);
-  s.robot_radius = sim.number("robot_radius", 0.25, 0.01, 5.0);
-  s.gps_sigma_xy = sim.number("gps_sigma_xy", 0.02, 0.0, 10.0);
-  s.gps_sigma_theta = hal::deg_to_rad(sim.number("gps_sigma_theta_deg", 0.5, 0.0, 90.0));
-  s.laser_beams = sim.integer("laser_beams", 181, 1, static_cast<int>(hal::LaserScan::kMaxBeams));
-  s.laser_fov = hal::deg_to_rad(sim.number("laser_fov_deg", 180.0, 0.1, 360.0));
-  s.laser_range = sim.number("laser_range", 8.0, 0.1, 100.0);
-  s.laser_sigma = sim.number("laser_sigma", 0.01, 0.0, 10.0);
-  s.head_max_rate = sim.number("head_max_rate", 4.0, 0.01, 100.0);
-  sim.reject_unknown();
-
-  Section mission = section(root, top, "mission", source);
-  cfg.goal_tolerance = mission.number("goal_tolerance_m", 0.3, 0.01, 10.0);
-  cfg.timeout_s = mission.number("timeout_s", 300.0, 0.01, kMaxRunSeconds);
-  mission.reject_unknown();
-
-  Section follower = section(root, top, "follower", source);
-  auto& f = cfg.follower;
-  f.gain = follower.number("gain", 2.0, 0.0, 100.0);
-  f.max_curvature = follower.number("max_curvature", s.limits.max_curvature, 0.01, 100.0);
-  f.max_speed = follower.number("max_speed", s.limits.max_speed, 0.01, 20.0);
-  f.min_speed = follower.number("min_speed", 0.2, 0.0, 20.0);
-  f.full_turn_error = hal::deg_to_rad(follower.number("full_turn_error_deg", 70.0, 1.0, 180.0));
-  f.approach_radius = follower.number("approach_radius_m", 0.0, 0.0, 100.0);
-  if (f.min_speed > f.max_speed) {
-    if (const toml::node* n = follower.find("min_speed")) follower.fail(*n, "min_speed", "must not exceed max_speed");
-    follower.fail_missing("min_speed", "the default 0.2 m/s exceeds max_speed; set min_speed");
-  }
-  follower.reject_unknown();
-
-  Section safety = section(root, top, "safety", source);
-  cfg.safety.stop_range = safety.number("stop_range_m", 0.9, 0.05, 50.0);
-  cfg.safety.release_range = safety.number("release_range_m", 1.2, 0.05, 50.0);
-  cfg.safety.hold_ms = safety.integer("release_after_ms", 300, 0, 600000);
-  if (cfg.safety.release_range <= cfg.safety.stop_range) {
-    if (const toml::node* n = safety.find("release_range_m")) {
-      safety.fail(*n, "release_range_m", "must be larger than stop_range_m (hysteresis)");
-    }
-    safety.fail_missing("release_range_m", "must be larger than stop_range_m (hysteresis)");
-  }
-  safety.reject_unknown();
-
-  Section camera = section(root, top, "camera", source);
-  auto& c = cfg.camera;
-  c.enabled = camera.boolean("enabled", false);
-  c.backend = camera.text("backend", "sim", {"sim", "opencv"});
-  c.source = camera.text("source", "");
-  const int width = camera.integer("width", 640, 16, 4096);
-  const int height = camera.integer("height", 480, 16, 4096);
-  if (width % 2 != 0) camera.fail(*camera.find("width"), "width", "must be even (YUYV packs pixel pairs)");
-  c.intrinsics = hal::CameraIntrinsics::from_fov(width, height, camera.number("hfov_deg", 57.0, 1.0, 179.0),
-                                                 camera.number("vfov_deg", 44.0, 1.0, 179.0));
-  c.format = camera.text("format", "yuyv", {"yuyv", "bgr"}) == "bgr" ? hal::PixelFormat::kBgr8 : hal::PixelFormat::kYuyv;
-  c.mount.pivot_height = camera.number("pivot_height_m", 0.45, 0.01, 10.0);
-  c.mount.forward = camera.number("forward_m", 0.05, -1.0, 1.0);
-  c.mount.up = camera.number("up_m", 0.06, -1.0, 1.0);
-  c.every_frames = camera.integer("every_frames", 3, 1, 1000);
-  if (c.enabled && c.backend == "sim" && cfg.backend != "sim") {
-    camera.fail_missing("backend", "the \"sim\" camera needs robot.backend = \"sim\"");
-  }
-  if (c.enabled && c.backend == "opencv" && c.source.empty()) {
-    camera.fail_missing("source", "the \"opencv\" camera needs a source (a device, a video file or an image folder)");
-  }
-  camera.reject_unknown();
-  if (c.enabled && c.backend == "sim") {
-    cfg.sim.camera = {true, c.intrinsics, c.mount, c.format, c.every_frames};
-  }
-
-  Section vision = section(root, top, "vision", source);
-  const std::string lut = vision.text("lut", "");
-  if (!lut.empty()) cfg.vision.lut = std::filesystem::path(lut).is_absolute() ? std::filesystem::path(lut) : base_dir / lut;
-  cfg.vision.seed = vision.unsigned_integer("seed", 1);
-  cfg.vision.max_trials = vision.integer("max_trials", 30, 1, 10000);
-  cfg.vision.skip = vision.integer("skip", 10, 1, 1000);
-  vision.reject_unknown();
-
-  Section telemetry = section(root, top, "telemetry", source);
-  cfg.trajectory_every = telemetry.integer("trajectory_every", 10, 1, 100000);
+  Section mission = in("mission");
+  read_mission(mission, cfg.mission);
+  Section follower = in("follower");
+  read_follower(follower, cfg.follower);
+  Section safety = in("safety");
+  read_safety(safety, cfg.safety);
+  Section camera = in("camera");
+  read_camera(camera, cfg.camera);
+  Section vision = in("vision");
+  read_vision(vision, cfg.vision, base_dir);
+  Section telemetry = in("telemetry");
+  cfg.trajectory_every = telemetry.integer("trajectory_every", cfg.trajectory_every, 1, 100000);
   telemetry.reject_unknown();
-  if (const std::string why = run_length_problem(cfg, cfg.timeout_s); !why.empty()) {
+  if (const std::string why = run_length_problem(cfg, cfg.mission.timeout_s); !why.empty()) {
     if (const toml::node* n = mission.find("timeout_s")) mission.fail(*n, "timeout_s", why);
     mission.fail_missing("timeout_s", why);
   }
+  mission.reject_unknown();
 
   top.reject_unknown();
   cfg.positions = record_positions(root, source);
   return cfg;
+}
+
+const executive::TaskSpec* FirmwareConfig::task(std::string_view name) const noexcept {
+  for (const auto& t : tasks) {
+    if (t.name == name) return &t;
+  }
+  return nullptr;
+}
+
+std::uint64_t FirmwareConfig::seed() const noexcept {
+  if (seed_override) return *seed_override;
+  if (backend_settings) return backend_settings->seed().value_or(0);
+  return 0;
 }
 
 FirmwareConfig load_config(const std::filesystem::path& path) {

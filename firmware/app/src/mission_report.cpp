@@ -4,7 +4,6 @@
 #include <csignal>
 #include <cstdio>
 
-#include "ringlet/sim_hal/world_svg.hpp"
 
 namespace ringlet::firmware {
 
@@ -63,8 +62,10 @@ std::uint64_t run_hash(const FirmwareStack& stack, const MissionSummary& s) noex
   }
   // The head-tracking score counts, not its error sum: the error is computed for scoring with libm
   // (atan2), whose last bits differ between x86-64 and aarch64, and it decides nothing.
-  f.bits(s.head.frames);
-  f.bits(s.head.on_target);
+  if (s.head) {
+    f.bits(s.head->frames);
+    f.bits(s.head->on_target);
+  }
   return f.h;
 }
 
@@ -83,16 +84,18 @@ std::uint64_t trajectory_hash(std::span<const hal::Pose2> poses) noexcept {
 MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, bool safe_before_shutdown) {
   const auto& cfg = stack.config();
   MissionSummary s;
+  const Telemetry& telemetry = stack.telemetry();
   s.backend = cfg.backend;
-  s.world = cfg.world.filename().string();
-  s.seed = cfg.sim.seed;
-  s.goals_reached = stack.mission().goals_reached();
-  s.goal_count = stack.mission().goal_count();
-  s.complete = stack.mission().complete() && s.goal_count > 0;
+  s.world = cfg.backend_settings ? cfg.backend_settings->source_name() : std::string();
+  s.seed = cfg.seed();
+  s.goals_reached = telemetry.goals_reached();
+  s.goal_count = cfg.mission.goals.size();
+  s.complete = s.goal_count > 0 && s.goals_reached == s.goal_count;
   s.mission_seconds = outcome.schedule_seconds;
   s.wall_seconds = outcome.wall_seconds;
-  s.distance_m = stack.sim_robot() != nullptr ? stack.sim_robot()->distance_travelled() : 0.0;
-  s.collisions = stack.telemetry().collisions();
+  s.distance_m = telemetry.odometry_path();
+  s.collisions = telemetry.collisions();
+  s.dropped_samples = telemetry.dropped_samples();
   s.failsafe = stack.executive().failsafe_triggered();
   s.watchdog = outcome.watchdog_fired;
   s.interrupted = outcome.interrupted;
@@ -112,8 +115,8 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
     s.machines.push_back({std::string(m.name()), std::string(m.current_state_name()), m.ringlets(), m.suspended()});
   }
   s.fsm_status_seen = stack.fsm_status_seen();
-  s.head = stack.telemetry().head_tracking();
-  if (const VisionTask* v = stack.vision()) s.vision = v->stats();
+  if (const TruthScore* score = stack.truth_score()) s.head = score->head_tracking();
+  if (const VisionStats* v = telemetry.vision()) s.vision = *v;
   s.run_hash = run_hash(stack, s);
   return s;
 }
@@ -151,12 +154,17 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
                   static_cast<unsigned long long>(v.missed_frames));
     out << line;
   }
-  if (s.head.frames > 0) {
+  if (s.dropped_samples > 0) {
+    std::snprintf(line, sizeof line, "  trajectory samples dropped (buffer full): %llu\n",
+                  static_cast<unsigned long long>(s.dropped_samples));
+    out << line;
+  }
+  if (s.head && s.head->frames > 0) {
     std::snprintf(line, sizeof line,
                   "  head on the ball (true ball, yaw within 5 deg): %.1f %% of %llu frames, mean error "
                   "%.2f deg, max %.1f deg\n",
-                  100.0 * s.head.on_target_share(), static_cast<unsigned long long>(s.head.frames),
-                  hal::rad_to_deg(s.head.mean_error()), hal::rad_to_deg(s.head.max_error));
+                  100.0 * s.head->on_target_share(), static_cast<unsigned long long>(s.head->frames),
+                  hal::rad_to_deg(s.head->mean_error()), hal::rad_to_deg(s.head->max_error));
     out << line;
   }
 }
@@ -198,24 +206,25 @@ nlohmann::json summary_json(const MissionSummary& s) {
           {"machines", machines},
           {"fsm_status_seen", s.fsm_status_seen},
           {"vision", vision},
-          {"head_tracking",
-           {{"frames", s.head.frames},
-            {"on_target_share", s.head.on_target_share()},
-            {"mean_error_deg", hal::rad_to_deg(s.head.mean_error())},
-            {"max_error_deg", hal::rad_to_deg(s.head.max_error)}}}};
+          {"trajectory_samples_dropped", s.dropped_samples},
+          {"head_tracking", s.head ? nlohmann::json{{"frames", s.head->frames},
+                                                    {"on_target_share", s.head->on_target_share()},
+                                                    {"mean_error_deg", hal::rad_to_deg(s.head->mean_error())},
+                                                    {"max_error_deg", hal::rad_to_deg(s.head->max_error)}}
+                                   : nlohmann::json(nullptr)}};
 }
 
 bool write_picture(std::ostream& out, const FirmwareStack& stack, const MissionSummary& s) {
-  const auto* sim = stack.sim_robot();
-  if (sim == nullptr) return false;
-  std::vector<sim_hal::Vec2> collisions;
-  for (const auto& c : stack.telemetry().collision_points()) collisions.push_back({c.x, c.y});
+  const hal::GroundTruth* truth = stack.truth();
+  if (truth == nullptr) return false;
+  std::vector<hal::WorldPoint> goals;
+  for (const auto& g : stack.config().mission.goals) goals.push_back({g.x, g.y});
   char caption[256];
   std::snprintf(caption, sizeof caption, "%s: %zu/%zu goals in %.1f s, %.1f m, %llu collisions (seed %llu)",
                 s.world.c_str(), s.goals_reached, s.goal_count, s.mission_seconds, s.distance_m,
                 static_cast<unsigned long long>(s.collisions), static_cast<unsigned long long>(s.seed));
-  sim_hal::write_world_svg(out, sim->world(),
-                       sim_hal::RunOverlay{stack.telemetry().trajectory(), collisions, s.goals_reached, caption});
+  truth->write_picture(out, hal::RunPicture{stack.telemetry().trajectory(), stack.telemetry().collision_points(),
+                                            goals, s.goals_reached, caption});
   return true;
 }
 

@@ -95,6 +95,7 @@ void Executive::run_frame(std::uint64_t frame, Nanos frame_start) noexcept {
   for (std::size_t i = 0; i < tasks_.size(); ++i) {
     if (tasks_[i].spec.active_in(frame)) run_task(i, frame, frame_start);
   }
+  if (observer_ != nullptr) observer_->frame_done(frame, frame_start);
 }
 
 void Executive::run_task(std::size_t index, std::uint64_t frame, Nanos frame_start) noexcept {

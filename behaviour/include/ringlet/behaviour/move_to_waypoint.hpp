@@ -17,7 +17,7 @@ struct MoveToWaypointParams {
   double max_curvature = 2.0;       // 1/m, the robot's steering limit
   double max_speed = 1.0;           // m/s on a straight line
   double min_speed = 0.2;           // m/s: a car-like robot must keep rolling to turn
-  double full_turn_error = 1.2;     // rad: at this heading error the speed has fallen to min_speed
+  double full_turn_error = hal::deg_to_rad(70.0);  // rad: at this heading error the speed has fallen to min_speed
   double approach_radius = 0.0;     // m: slow down linearly inside this distance (0: never)
 };
 

@@ -31,8 +31,6 @@ struct RunPicture {
 class GroundTruth {
  public:
   virtual ~GroundTruth() = default;
-  /// The world's name (its file name), for the report.
-  [[nodiscard]] virtual std::string_view world_name() const noexcept = 0;
   /// Where the world's ball really is in the robot frame now (none: the world has no ball).
   [[nodiscard]] virtual std::optional<RobotPoint> ball_in_robot_frame() const noexcept = 0;
   /// Contact events between the robot and anything solid so far.

@@ -37,7 +37,7 @@ struct SimConfig {
 /// fields only when it is enabled).
 void validate(const SimConfig& config);
 
-class SimRobot final : public hal::Robot, private hal::Sensors, private hal::Actuators {
+class SimRobot : public hal::Robot, private hal::Sensors, private hal::Actuators, private hal::BallSensor {
  public:
   /// Validates the configuration and checks the start pose is collision-free (throws otherwise).
   SimRobot(World world, const SimConfig& config);
@@ -51,6 +51,8 @@ class SimRobot final : public hal::Robot, private hal::Sensors, private hal::Act
   hal::Actuators& actuators() noexcept override { return *this; }
   /// The simulated head camera when SimConfig::camera.enabled, otherwise null.
   hal::Camera* camera() noexcept override { return camera_.get(); }
+  /// An idealised ball detector: where the world's ball really is (seen when the world has one).
+  hal::BallSensor* ball_sensor() noexcept override { return this; }
 
   // Ground truth, for telemetry, pictures and tests (never for the controller's logic).
   [[nodiscard]] const World& world() const noexcept { return world_; }
@@ -71,6 +73,8 @@ class SimRobot final : public hal::Robot, private hal::Sensors, private hal::Act
  private:
   // hal::Sensors
   bool read(hal::SensorFrame& out) noexcept override;
+  // hal::BallSensor
+  bool read(hal::BallSighting& out) noexcept override;
   // hal::Actuators
   void write(const hal::ActuatorCommand& cmd) noexcept override;
   void enter_safe_state() noexcept override;

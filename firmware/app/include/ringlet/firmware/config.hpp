@@ -1,11 +1,13 @@
 #pragma once
-// The firmware's configuration file (TOML, documented in firmware/README.md): which backend,
-// which world, the simulator, the mission, the executive and its task table. Loading is
+// The firmware's configuration file (TOML, documented in firmware/README.md): which backend and
+// its own section (read by the backend factory), the mission, the executive and its task table. Loading is
 // all-or-nothing: any problem is a ConfigError "file:line:col: key: message" and no config exists.
 // Unknown keys are errors too, so a typo never silently falls back to a default.
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -14,8 +16,8 @@
 #include "ringlet/behaviour/move_to_waypoint.hpp"
 #include "ringlet/executive/realtime.hpp"
 #include "ringlet/executive/task_table.hpp"
+#include "ringlet/hal/camera.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
-#include "ringlet/sim_hal/sim_robot.hpp"
 
 namespace ringlet::firmware {
 
@@ -35,16 +37,36 @@ struct SafetyParams {
   long hold_ms = 300;          // ms clear before driving on
 };
 
-/// The head camera ([camera]): rendered by the simulator ("sim") or read through OpenCV
-/// ("opencv": a V4L2 device, a video file or an image folder).
+/// The head camera ([camera]): the robot's own ("robot": the simulator renders it, a replay plays
+/// it back) or read through OpenCV ("opencv": a V4L2 device, a video file or an image folder). It
+/// is opened when the task table runs the vision task, and delivers a frame every time vision
+/// runs (the vision row's `every`).
 struct CameraSettings {
-  bool enabled = false;
-  std::string backend = "sim";
+  std::string backend = "robot";
   std::string source;  // opencv: "/dev/video0", a video file or a folder of images
-  hal::CameraIntrinsics intrinsics = hal::CameraIntrinsics::nao();
+  double hfov_deg = 57.0;  // the NAO's head camera
+  double vfov_deg = 44.0;
+  hal::CameraIntrinsics intrinsics = hal::CameraIntrinsics::from_fov(640, 480, hfov_deg, vfov_deg);
   hal::CameraMount mount{};
   hal::PixelFormat format = hal::PixelFormat::kYuyv;
-  int every_frames = 3;  // sim: a frame every 3rd period (30 fps at 100 Hz)
+};
+
+/// The mission ([mission]): waypoints in the world frame, visited in order.
+struct MissionSettings {
+  static constexpr std::size_t kMaxGoals = 32;  // what wb::MissionGoals holds
+  std::vector<behaviour::Waypoint> goals;
+  double goal_tolerance = 0.3;  // m: a goal counts as reached this close
+  double timeout_s = 300.0;     // schedule time before giving up
+};
+
+/// One backend's own section ([sim], ...), read and used by the backend factory only.
+class BackendSettings {
+ public:
+  virtual ~BackendSettings() = default;
+  /// What the run was made of, for the report: e.g. "courtyard.world".
+  [[nodiscard]] virtual std::string source_name() const = 0;
+  /// The seed of the backend's randomness (none: the backend has none, e.g. a replay).
+  [[nodiscard]] virtual std::optional<std::uint64_t> seed() const = 0;
 };
 
 /// Field-line and ball detection ([vision]).
@@ -77,11 +99,10 @@ struct FirmwareConfig {
   std::filesystem::path source;     // the file it came from
   ConfigPositions positions;        // where each key was written in it
   std::string backend = "sim";      // robot.backend
-  std::filesystem::path world;      // sim.world, resolved relative to the config file
-  sim_hal::SimConfig sim{};             // sim.* (its period and seed come from executive/sim)
+  std::shared_ptr<const BackendSettings> backend_settings;  // its section, read by the factory
+  std::optional<std::uint64_t> seed_override;  // --seed: replaces the backend's seed
+  MissionSettings mission{};
   behaviour::MoveToWaypointParams follower{};
-  double goal_tolerance = 0.3;      // mission.goal_tolerance_m
-  double timeout_s = 300.0;         // mission.timeout_s: schedule time before giving up
   ClockMode clock = ClockMode::kLockstep;
   executive::ExecutiveConfig executive{};
   executive::RealtimeSettings realtime{};
@@ -90,6 +111,11 @@ struct FirmwareConfig {
   CameraSettings camera{};
   VisionSettings vision{};
   int trajectory_every = 10;        // telemetry.trajectory_every: frames between samples
+
+  /// The row of the task table named `name`, or null when that task does not run.
+  [[nodiscard]] const executive::TaskSpec* task(std::string_view name) const noexcept;
+  /// The seed the run uses: --seed, else the backend's (0 when it has none).
+  [[nodiscard]] std::uint64_t seed() const noexcept;
 };
 
 /// Reads the file with hal::read_file (regular files up to hal::kMaxTextFileBytes only) and parses it.

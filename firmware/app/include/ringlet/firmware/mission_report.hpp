@@ -45,7 +45,8 @@ struct MissionSummary {
                                       // and the machines (no host measurements): the golden-run check
   std::vector<MachineSummary> machines;
   std::uint64_t fsm_status_seen = 0;  // FsmStatus delivered by the stack's whiteboard subscription
-  HeadTracking head{};                // sim only: measured head yaw against the true ball
+  std::uint64_t dropped_samples = 0;  // trajectory samples the buffer had no room for
+  std::optional<HeadTracking> head;   // with ground truth: measured head yaw against the true ball
   std::optional<VisionStats> vision;  // with a camera: what vision found
 };
 
@@ -59,7 +60,7 @@ struct MissionSummary {
 void print_summary(std::ostream& out, const MissionSummary& s);
 [[nodiscard]] nlohmann::json summary_json(const MissionSummary& s);
 
-/// The world with the driven trajectory as SVG (sim backend only; returns false otherwise).
+/// The world with the driven trajectory as SVG (backends with ground truth; false otherwise).
 bool write_picture(std::ostream& out, const FirmwareStack& stack, const MissionSummary& s);
 
 /// Process exit code for a run: 0 mission complete; 3 incomplete (time ran out); 4 the safe state

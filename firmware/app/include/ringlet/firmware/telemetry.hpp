@@ -1,6 +1,7 @@
 #pragma once
-// The record of a run: the trajectory (sampled every N frames), where collisions happened, how
-// many goals were reached and when. Buffers are sized at start-up for the longest run the
+// The record of a run, as the controller saw it: the trajectory (sampled every N frames), where
+// the bumper touched something, the odometry's path length, the mission's progress and what
+// vision found. Ground truth is not here: the report reads it from hal::GroundTruth. Buffers are sized at start-up for the longest run the
 // configuration allows, so recording never allocates; samples beyond capacity are counted, not
 // stored.
 #include <cstddef>
@@ -9,58 +10,57 @@
 #include <vector>
 
 #include "ringlet/hal/geometry.hpp"
-#include "ringlet/hal/sensors.hpp"
+#include "ringlet/hal/ground_truth.hpp"
 #include "ringlet/hal/time.hpp"
 
 namespace ringlet::firmware {
 
-struct CollisionPoint {
-  double x = 0.0;
-  double y = 0.0;
-};
-
-/// How well the head's measured yaw follows the true direction of the ball (sim only). Frames
-/// where the ball lies beyond the neck's reach, and the first second (the head starts ahead), do
-/// not count.
-struct HeadTracking {
-  static constexpr double kNeckLimit = 2.0;      // rad, as the ball tracker clamps
-  static constexpr double kOnTarget = 0.0873;    // rad: 5 degrees
-  std::uint64_t frames = 0;
-  std::uint64_t on_target = 0;
-  double sum_error = 0.0;  // rad
-  double max_error = 0.0;  // rad
-
-  [[nodiscard]] double on_target_share() const noexcept {
-    return frames == 0 ? 0.0 : static_cast<double>(on_target) / static_cast<double>(frames);
-  }
-  [[nodiscard]] double mean_error() const noexcept {
-    return frames == 0 ? 0.0 : sum_error / static_cast<double>(frames);
-  }
+/// What vision did over the run.
+struct VisionStats {
+  std::uint64_t frames = 0;         // camera frames processed
+  std::uint64_t with_lines = 0;     // ... in which at least one line was found
+  std::uint64_t lines = 0;          // lines found in all
+  std::uint64_t with_ball = 0;      // ... in which the ball was found
+  std::uint64_t cut = 0;            // ... in which the deadline cut work short
+  std::uint64_t degraded = 0;       // ... processed at a degrade level above 0
+  std::uint64_t bad_frames = 0;     // frames of the wrong size (nothing done)
+  std::uint64_t missed_frames = 0;  // sequence gaps: frames the camera had that were never processed
 };
 
 class Telemetry {
  public:
-  Telemetry(std::size_t trajectory_capacity, std::size_t collision_capacity, std::size_t goal_count);
+  Telemetry(std::size_t trajectory_capacity, std::size_t collision_capacity);
 
   void record_pose(const hal::Pose2& pose) noexcept;
   void record_collision(const hal::Pose2& pose) noexcept;
-  void record_goal(std::size_t goals_reached, hal::Nanos when) noexcept;
-  void record_head(const hal::HeadJoints& head, const hal::RobotPoint& true_ball, hal::Nanos when) noexcept;
+  /// The odometry's signed distance so far; the path length grows by each change's magnitude.
+  void record_odometry(double distance) noexcept;
+  void record_progress(std::size_t goals_reached, std::size_t goal_count) noexcept;
+  /// Start-up only: the vision task's counters (the report shows them when enabled).
+  VisionStats& enable_vision() noexcept;
 
   [[nodiscard]] std::span<const hal::Pose2> trajectory() const noexcept { return trajectory_; }
-  [[nodiscard]] std::span<const CollisionPoint> collision_points() const noexcept { return collision_points_; }
+  [[nodiscard]] std::span<const hal::WorldPoint> collision_points() const noexcept { return collision_points_; }
   [[nodiscard]] std::uint64_t collisions() const noexcept { return collisions_; }
-  [[nodiscard]] std::span<const hal::Nanos> goal_times() const noexcept { return goal_times_; }
+  /// Trajectory samples that did not fit the buffer (reported, never silently lost).
   [[nodiscard]] std::uint64_t dropped_samples() const noexcept { return dropped_; }
-  [[nodiscard]] const HeadTracking& head_tracking() const noexcept { return head_; }
+  [[nodiscard]] double odometry_path() const noexcept { return odometry_path_; }
+  [[nodiscard]] std::size_t goals_reached() const noexcept { return goals_reached_; }
+  [[nodiscard]] std::size_t goal_count() const noexcept { return goal_count_; }
+  [[nodiscard]] const VisionStats* vision() const noexcept { return vision_enabled_ ? &vision_ : nullptr; }
 
  private:
   std::vector<hal::Pose2> trajectory_;
-  std::vector<CollisionPoint> collision_points_;
-  std::vector<hal::Nanos> goal_times_;
+  std::vector<hal::WorldPoint> collision_points_;
   std::uint64_t collisions_ = 0;
   std::uint64_t dropped_ = 0;
-  HeadTracking head_{};
+  bool have_odometry_ = false;
+  double last_odometry_ = 0.0;
+  double odometry_path_ = 0.0;
+  std::size_t goals_reached_ = 0;
+  std::size_t goal_count_ = 0;
+  bool vision_enabled_ = false;
+  VisionStats vision_{};
 };
 
 }  // namespace ringlet::firmware

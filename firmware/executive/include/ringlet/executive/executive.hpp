@@ -34,6 +34,15 @@ class TableError : public std::runtime_error {
   std::vector<std::string> problems_;
 };
 
+/// Watches the run from outside the task table (scoring against ground truth, recording): called
+/// after every executed frame, never judged against a budget. It must not change what the
+/// controller does.
+class FrameObserver {
+ public:
+  virtual ~FrameObserver() = default;
+  virtual void frame_done(std::uint64_t frame, Nanos frame_start) noexcept = 0;
+};
+
 /// Why run() returned.
 enum class StopReason : std::uint8_t { kFrameLimit, kRequested };
 
@@ -54,6 +63,9 @@ class Executive {
 
   /// Incremented at the start of every frame; the watchdog watches it.
   [[nodiscard]] const std::atomic<std::uint64_t>& heartbeat() const noexcept { return heartbeat_; }
+
+  /// Start-up only: `observer` (or null) sees every frame from now on.
+  void set_observer(FrameObserver* observer) noexcept { observer_ = observer; }
 
   [[nodiscard]] const ExecutiveConfig& config() const noexcept { return config_; }
   [[nodiscard]] std::span<const TaskBinding> tasks() const noexcept { return tasks_; }
@@ -80,6 +92,7 @@ class Executive {
   const hal::Stopwatch& stopwatch_;
   hal::Actuators& safe_target_;
   EventLog* events_;
+  FrameObserver* observer_ = nullptr;
 
   bool started_ = false;
   Nanos start_{0};

@@ -1,0 +1,34 @@
+#pragma once
+// The one place in firmware/ that knows the backends: it reads each backend's own configuration
+// section ([sim], ...) and builds the robot (and an OpenCV camera) by name. Everything else in the
+// firmware sees only hal::Robot, hal::Camera and hal::GroundTruth.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ringlet/firmware/config.hpp"
+#include "ringlet/hal/clock.hpp"
+#include "ringlet/hal/robot.hpp"
+
+namespace ringlet::firmware {
+
+class Section;
+
+/// The backends this build can drive (robot.backend's values); each has a section of its name.
+[[nodiscard]] const std::vector<std::string>& backend_names();
+
+/// Reads the section of backend `name` (an absent section is empty: its defaults). `so_far` is the
+/// configuration read before it. ConfigError "file:line:col: key: message" on problems.
+[[nodiscard]] std::shared_ptr<const BackendSettings> read_backend_settings(const std::string& name, Section& section,
+                                                                           const std::filesystem::path& base_dir,
+                                                                           const FirmwareConfig& so_far);
+
+/// The robot of config.backend. Loads what the backend needs (the world file of "sim"): bad input
+/// is a ConfigError naming the file and the key that named it.
+[[nodiscard]] std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config);
+
+/// The camera [camera] asks for when it is not the robot's own (backend "opencv"), else null.
+[[nodiscard]] std::unique_ptr<hal::Camera> make_camera(const FirmwareConfig& config, const hal::Clock& clock);
+
+}  // namespace ringlet::firmware

@@ -1,0 +1,35 @@
+#pragma once
+// What a task declares about itself, as B-Human's modules and the generated machines do: its name
+// in the task table, the whiteboard types it REQUIRES (reads) and PROVIDES (posts), and where the
+// declaration is written, so that a start-up problem points at the task's own file.
+//
+//   static constexpr TaskDeclaration kDeclaration{
+//       "sense", kNoTypes, kTypeNames<wb::Pose, wb::LaserSummary>, std::source_location::current()};
+#include <array>
+#include <source_location>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "ringlet/whiteboard/messages.hpp"
+
+namespace ringlet::firmware {
+
+/// The names of whiteboard types, as a constexpr list a declaration can point at.
+template <wb::Message... Ts>
+inline constexpr std::array<std::string_view, sizeof...(Ts)> kTypeNames{Ts::kName...};
+inline constexpr std::span<const std::string_view> kNoTypes{};
+
+struct TaskDeclaration {
+  std::string_view name;
+  std::span<const std::string_view> requires_types;
+  std::span<const std::string_view> provides_types;
+  std::source_location where;
+
+  /// "file:line" of the declaration, for start-up messages.
+  [[nodiscard]] std::string location() const {
+    return std::string(where.file_name()) + ":" + std::to_string(where.line());
+  }
+};
+
+}  // namespace ringlet::firmware

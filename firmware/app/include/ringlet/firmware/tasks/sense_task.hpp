@@ -1,0 +1,35 @@
+#pragma once
+// HAL sensors → whiteboard: the pose measurement, the nearest laser return, the head's posture and
+// the base's state (odometry, bumper, battery), each stamped. On the simulated robot this read is
+// also what advances the world by one period.
+#include <memory>
+
+#include "ringlet/executive/task.hpp"
+#include "ringlet/firmware/task_declaration.hpp"
+#include "ringlet/firmware/task_services.hpp"
+#include "ringlet/hal/sensors.hpp"
+#include "ringlet/whiteboard/whiteboard.hpp"
+
+namespace ringlet::firmware {
+
+class SenseTask final : public executive::Task {
+ public:
+  static constexpr TaskDeclaration kDeclaration{
+      "sense", kNoTypes, kTypeNames<wb::Pose, wb::LaserSummary, wb::HeadPosture, wb::BodyState>,
+      std::source_location::current()};
+  /// HAL read and posting. The simulator's own work inside read() (ray casting the laser, waiting
+  /// for the render thread) is not the robot's and is not modelled.
+  static constexpr hal::Nanos kModelledCost{40'000};
+
+  static std::unique_ptr<executive::Task> make(TaskServices& services);
+  SenseTask(hal::Sensors& sensors, wb::Whiteboard& board) noexcept : sensors_(sensors), board_(board) {}
+  void run(const executive::TaskContext& ctx) noexcept override;
+  [[nodiscard]] hal::Nanos modelled_cost() const noexcept override { return kModelledCost; }
+
+ private:
+  hal::Sensors& sensors_;
+  wb::Whiteboard& board_;
+  hal::SensorFrame frame_{};  // filled in place by the backend: no copy of the laser per frame
+};
+
+}  // namespace ringlet::firmware

@@ -1,0 +1,55 @@
+#pragma once
+// Camera → vision pipeline → whiteboard (FieldLines, BallBelief). Runs when the table says (every
+// camera period); processes the newest frame once, with the head posture of its capture time read
+// back from the whiteboard's HeadPosture generations, inside the task's deadline (and at the
+// executive's degrade level).
+#include <memory>
+
+#include "ringlet/executive/task.hpp"
+#include "ringlet/firmware/task_declaration.hpp"
+#include "ringlet/firmware/task_services.hpp"
+#include "ringlet/hal/camera.hpp"
+#include "ringlet/vision/pipeline.hpp"
+#include "ringlet/whiteboard/whiteboard.hpp"
+
+namespace ringlet::firmware {
+
+/// How the vision task honours its deadline. On the real clock the pipeline stops work when the
+/// task's time is up. In lockstep simulation it never does: a cut there would depend on how busy
+/// the host is, and a simulated run must be bit-identical for a seed; the executive judges the
+/// task on its modelled cost instead.
+enum class VisionDeadline : std::uint8_t { kNone, kWall, kCpu };
+
+class VisionTask final : public executive::Task {
+ public:
+  static constexpr TaskDeclaration kDeclaration{"vision", kTypeNames<wb::HeadPosture>,
+                                                kTypeNames<wb::FieldLines, wb::BallBelief>,
+                                                std::source_location::current()};
+  /// An activation that finds no new camera frame.
+  static constexpr hal::Nanos kNoFrameCost{2'000};
+
+  /// ConfigError when there is no camera or the colour table cannot be loaded.
+  static std::unique_ptr<executive::Task> make(TaskServices& services);
+  VisionTask(hal::Camera& camera, std::unique_ptr<vision::VisionPipeline> pipeline, wb::Whiteboard& board,
+             VisionDeadline deadline, VisionStats& stats) noexcept;
+  void run(const executive::TaskContext& ctx) noexcept override;
+  /// vision::modelled_cost of the frame processed, or kNoFrameCost when there was none.
+  [[nodiscard]] hal::Nanos modelled_cost() const noexcept override { return cost_; }
+
+ private:
+  [[nodiscard]] hal::HeadJoints head_at(hal::Nanos when) const noexcept;
+
+  hal::Camera& camera_;
+  std::unique_ptr<vision::VisionPipeline> pipeline_;
+  wb::Whiteboard& board_;
+  VisionDeadline deadline_;
+  VisionStats& stats_;
+  bool have_frame_ = false;
+  std::uint64_t last_sequence_ = 0;
+  hal::Nanos cost_{0};
+};
+
+/// The vision pipeline for [camera] and [vision] (its colour table loaded: ConfigError if not).
+[[nodiscard]] std::unique_ptr<vision::VisionPipeline> make_vision(const FirmwareConfig& config);
+
+}  // namespace ringlet::firmware

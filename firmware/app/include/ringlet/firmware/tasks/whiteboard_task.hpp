@@ -1,0 +1,30 @@
+#pragma once
+// The cycle's one defined point for whiteboard subscriptions (dispatch, in type-id order), and
+// once a second the executive's counters as ExecutiveTiming.
+#include <memory>
+
+#include "ringlet/executive/task.hpp"
+#include "ringlet/firmware/task_declaration.hpp"
+#include "ringlet/firmware/task_services.hpp"
+#include "ringlet/whiteboard/whiteboard.hpp"
+
+namespace ringlet::firmware {
+
+class WhiteboardTask final : public executive::Task {
+ public:
+  static constexpr TaskDeclaration kDeclaration{"whiteboard", kNoTypes, kTypeNames<wb::ExecutiveTiming>,
+                                                std::source_location::current()};
+  static constexpr hal::Nanos kModelledCost{6'000};
+
+  static std::unique_ptr<executive::Task> make(TaskServices& services);
+  WhiteboardTask(wb::Whiteboard& board, const executive::Executive* const& executive) noexcept
+      : board_(board), executive_(executive) {}
+  void run(const executive::TaskContext& ctx) noexcept override;
+  [[nodiscard]] hal::Nanos modelled_cost() const noexcept override { return kModelledCost; }
+
+ private:
+  wb::Whiteboard& board_;
+  const executive::Executive* const& executive_;
+};
+
+}  // namespace ringlet::firmware

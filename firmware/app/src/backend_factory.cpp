@@ -1,0 +1,146 @@
+#include "ringlet/firmware/backend_factory.hpp"
+
+#include <sstream>
+
+#include "config_section.hpp"
+#include "ringlet/sim_hal/collision.hpp"
+#include "ringlet/sim_hal/sim_robot.hpp"
+#include "ringlet/sim_hal/world.hpp"
+#include "ringlet/sim_hal/world_svg.hpp"
+
+#ifdef RINGLET_HAVE_OPENCV_CAMERA
+#include "ringlet/hal/opencv_camera.hpp"
+#endif
+
+namespace ringlet::firmware {
+namespace {
+
+// ---- sim: the simulated robot in a world file --------------------------------------------------
+
+struct SimSettings final : BackendSettings {
+  std::filesystem::path world;  // sim.world, resolved relative to the configuration file
+  sim_hal::SimConfig sim{};     // its period, seed override and camera come from the rest at make_robot
+
+  [[nodiscard]] std::string source_name() const override { return world.filename().string(); }
+  [[nodiscard]] std::optional<std::uint64_t> seed() const override { return sim.seed; }
+};
+
+std::shared_ptr<const BackendSettings> read_sim(Section& section, const std::filesystem::path& base_dir,
+                                                const FirmwareConfig& so_far) {
+  auto out = std::make_shared<SimSettings>();
+  out->world = section.path("world", base_dir);
+  if (out->world.empty() && so_far.backend == "sim") {
+    section.fail_missing("world", "the simulated robot needs a world file (sim.world = \"...\")");
+  }
+  auto& s = out->sim;
+  s.seed = section.unsigned_integer("seed", s.seed);
+  s.limits.max_speed = section.number("max_speed", s.limits.max_speed, 0.01, 20.0);
+  s.limits.max_curvature = section.number("max_curvature", s.limits.max_curvature, 0.01, 100.0);
+  s.limits.max_acceleration = section.number("max_acceleration", s.limits.max_acceleration, 0.01, 100.0);
+  s.limits.max_curvature_rate = section.number("max_curvature_rate", s.limits.max_curvature_rate, 0.01, 1000.0);
+  s.robot_radius = section.number("robot_radius", s.robot_radius, 0.01, 5.0);
+  s.gps_sigma_xy = section.number("gps_sigma_xy", s.gps_sigma_xy, 0.0, 10.0);
+  s.gps_sigma_theta = hal::deg_to_rad(section.number("gps_sigma_theta_deg", hal::rad_to_deg(s.gps_sigma_theta), 0.0, 90.0));
+  s.laser_beams = section.integer("laser_beams", s.laser_beams, 1, static_cast<int>(hal::LaserScan::kMaxBeams));
+  s.laser_fov = hal::deg_to_rad(section.number("laser_fov_deg", hal::rad_to_deg(s.laser_fov), 0.1, 360.0));
+  s.laser_range = section.number("laser_range", s.laser_range, 0.1, 100.0);
+  s.laser_sigma = section.number("laser_sigma", s.laser_sigma, 0.0, 10.0);
+  s.head_max_rate = section.number("head_max_rate", s.head_max_rate, 0.01, 100.0);
+  return out;
+}
+
+// The world named by sim.world; a file that cannot be read is named with the key that named it.
+sim_hal::World load_world_of(const FirmwareConfig& config, const SimSettings& settings) {
+  try {
+    return sim_hal::load_world(settings.world);
+  } catch (const sim_hal::WorldError& e) {
+    const std::string message = e.what();
+    // Errors inside the world file already say "<world>:<line>:"; only add where the key is.
+    if (message.rfind(settings.world.string() + ": cannot read", 0) != 0) throw ConfigError(message);
+    throw ConfigError(config.positions.at("sim.world") + ": sim.world: " + message);
+  }
+}
+
+// The simulated robot is its own ground truth; the picture is its world with the run drawn on.
+class SimBackend final : public sim_hal::SimRobot, private hal::GroundTruth {
+ public:
+  using sim_hal::SimRobot::SimRobot;
+  [[nodiscard]] const hal::GroundTruth* ground_truth() const noexcept override { return this; }
+
+ private:
+  [[nodiscard]] std::optional<hal::RobotPoint> ball_in_robot_frame() const noexcept override {
+    return true_ball_in_robot_frame();
+  }
+  [[nodiscard]] std::uint64_t collisions() const noexcept override { return SimRobot::collisions(); }
+  [[nodiscard]] double distance_travelled() const noexcept override { return SimRobot::distance_travelled(); }
+  void write_picture(std::ostream& out, const hal::RunPicture& run) const override {
+    sim_hal::write_world_svg(out, world(), run);
+  }
+};
+
+std::unique_ptr<hal::Robot> make_sim(const FirmwareConfig& config, const SimSettings& settings) {
+  sim_hal::World world = load_world_of(config, settings);
+  sim_hal::SimConfig sim = settings.sim;
+  sim.period = config.executive.period;
+  sim.seed = config.seed();
+  if (const executive::TaskSpec* vision = config.task("vision"); vision != nullptr && config.camera.backend == "robot") {
+    // The rendered camera delivers a frame whenever vision runs: one setting, the vision row's.
+    sim.camera = {true, config.camera.intrinsics, config.camera.mount, config.camera.format, vision->every};
+  }
+  // Checked here, not only in SimRobot, so that the message names both places: the world's
+  // start line and the configuration's robot radius.
+  if (sim_hal::disc_collides(world, sim_hal::Vec2{world.start.x, world.start.y}, sim.robot_radius)) {
+    std::ostringstream s;
+    s << settings.world.string() << ':' << world.start_line << ": start pose (" << world.start.x << ", "
+      << world.start.y << ") collides with an obstacle or the bounds for a robot of radius " << sim.robot_radius
+      << " m (sim.robot_radius, " << config.positions.at("sim.robot_radius") << ")";
+    throw ConfigError(s.str());
+  }
+  try {
+    return std::make_unique<SimBackend>(std::move(world), sim);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(config.positions.at("sim") + ": sim: " + e.what());
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& backend_names() {
+  static const std::vector<std::string> names{"sim"};
+  return names;
+}
+
+std::shared_ptr<const BackendSettings> read_backend_settings(const std::string& name, Section& section,
+                                                             const std::filesystem::path& base_dir,
+                                                             const FirmwareConfig& so_far) {
+  if (name == "sim") return read_sim(section, base_dir, so_far);
+  throw ConfigError("robot.backend: no reader for backend \"" + name + "\"");
+}
+
+std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config) {
+  if (config.backend == "sim") return make_sim(config, static_cast<const SimSettings&>(*config.backend_settings));
+  throw ConfigError(config.positions.at("robot.backend") + ": robot.backend: \"" + config.backend +
+                    "\" is not a backend of this build");
+}
+
+std::unique_ptr<hal::Camera> make_camera(const FirmwareConfig& config, const hal::Clock& clock) {
+  if (config.task("vision") == nullptr || config.camera.backend != "opencv") return nullptr;
+#ifdef RINGLET_HAVE_OPENCV_CAMERA
+  hal::OpenCvCameraConfig c;
+  c.source = config.camera.source;
+  c.width = config.camera.intrinsics.width;
+  c.height = config.camera.intrinsics.height;
+  c.format = config.camera.format;
+  try {
+    return std::make_unique<hal::OpenCvCamera>(c, clock);
+  } catch (const hal::CameraError& e) {
+    throw ConfigError(config.positions.at("camera.source") + ": camera.source: " + e.what());
+  }
+#else
+  (void)clock;
+  throw ConfigError(config.positions.at("camera.backend") +
+                    ": camera.backend: this build has no OpenCV camera (OpenCV was not found)");
+#endif
+}
+
+}  // namespace ringlet::firmware

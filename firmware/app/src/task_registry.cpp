@@ -1,0 +1,34 @@
+#include "ringlet/firmware/task_registry.hpp"
+
+#include "ringlet/firmware/tasks/actuate_task.hpp"
+#include "ringlet/firmware/tasks/ball_sensor_task.hpp"
+#include "ringlet/firmware/tasks/fsm_task.hpp"
+#include "ringlet/firmware/tasks/goals_task.hpp"
+#include "ringlet/firmware/tasks/sense_task.hpp"
+#include "ringlet/firmware/tasks/telemetry_task.hpp"
+#include "ringlet/firmware/tasks/vision_task.hpp"
+#include "ringlet/firmware/tasks/whiteboard_task.hpp"
+
+namespace ringlet::firmware {
+
+const RegisteredTask* TaskRegistry::find(std::string_view name) const noexcept {
+  for (const RegisteredTask& t : tasks_) {
+    if (t.declaration->name == name) return &t;
+  }
+  return nullptr;
+}
+
+TaskRegistry production_tasks() {
+  TaskRegistry registry;
+  registry.add<SenseTask>();
+  registry.add<BallSensorTask>();
+  registry.add<GoalsTask>();
+  registry.add<VisionTask>();
+  registry.add<FsmTask>();
+  registry.add<ActuateTask>();
+  registry.add<TelemetryTask>();
+  registry.add<WhiteboardTask>();
+  return registry;
+}
+
+}  // namespace ringlet::firmware

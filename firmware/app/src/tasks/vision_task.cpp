@@ -1,0 +1,87 @@
+#include "ringlet/firmware/tasks/vision_task.hpp"
+
+#include "ringlet/vision/cost_model.hpp"
+#include "ringlet/vision/messages.hpp"
+
+namespace ringlet::firmware {
+
+std::unique_ptr<vision::VisionPipeline> make_vision(const FirmwareConfig& config) {
+  vision::ColourTable table = vision::ColourTable::from_thresholds(vision::ColourThresholds{});
+  if (!config.vision.lut.empty()) {
+    vision::ColourTableLoad loaded = vision::ColourTable::load(config.vision.lut);
+    if (!loaded.table) throw ConfigError(config.positions.at("vision.lut") + ": vision.lut: " + loaded.error);
+    table = std::move(*loaded.table);
+  }
+  vision::VisionConfig v;
+  v.intrinsics = config.camera.intrinsics;
+  v.mount = config.camera.mount;
+  v.ransac.max_trials = config.vision.max_trials;
+  v.ransac.skip = config.vision.skip;
+  v.ransac.seed = config.vision.seed;
+  return std::make_unique<vision::VisionPipeline>(v, std::move(table));
+}
+
+std::unique_ptr<executive::Task> VisionTask::make(TaskServices& services) {
+  const FirmwareConfig& config = services.config;
+  if (services.camera == nullptr) {
+    throw ConfigError(config.positions.at("executive.tasks") + ": task 'vision': the " +
+                      std::string(services.robot.backend_name()) + " backend has no camera (see [camera])");
+  }
+  const VisionDeadline deadline = config.clock == ClockMode::kLockstep ? VisionDeadline::kNone
+                                  : config.executive.overrun_on_cpu_time ? VisionDeadline::kCpu
+                                                                          : VisionDeadline::kWall;
+  return std::make_unique<VisionTask>(*services.camera, make_vision(config), services.board, deadline,
+                                      services.telemetry.enable_vision());
+}
+
+VisionTask::VisionTask(hal::Camera& camera, std::unique_ptr<vision::VisionPipeline> pipeline, wb::Whiteboard& board,
+                       VisionDeadline deadline, VisionStats& stats) noexcept
+    : camera_(camera), pipeline_(std::move(pipeline)), board_(board), deadline_(deadline), stats_(stats) {}
+
+hal::HeadJoints VisionTask::head_at(hal::Nanos when) const noexcept {
+  // The posture sensed closest to `when`, among the generations the whiteboard still holds (the
+  // newest when none is left).
+  const std::uint64_t newest = board_.generation<wb::HeadPosture>();
+  hal::HeadJoints best{};
+  hal::Nanos best_gap = hal::Nanos::max();
+  for (std::uint64_t g = newest; g > 0 && newest - g < board_.depth(); --g) {
+    const auto r = board_.read<wb::HeadPosture>(g);
+    if (!r.ok()) break;
+    const hal::Nanos stamp{r.msg.stamp_ns};
+    const hal::Nanos gap = stamp > when ? stamp - when : when - stamp;
+    if (gap < best_gap) {
+      best_gap = gap;
+      best = {r.msg.yaw, r.msg.pitch};
+    }
+  }
+  return best;
+}
+
+void VisionTask::run(const executive::TaskContext& ctx) noexcept {
+  hal::FrameView frame;
+  cost_ = kNoFrameCost;
+  if (!camera_.grab_latest(frame) || (have_frame_ && frame.sequence == last_sequence_)) return;
+  if (have_frame_ && frame.sequence > last_sequence_ + 1) stats_.missed_frames += frame.sequence - last_sequence_ - 1;
+  have_frame_ = true;
+  last_sequence_ = frame.sequence;
+  const vision::Deadline deadline =
+      deadline_ == VisionDeadline::kNone
+          ? vision::Deadline{}
+          : vision::Deadline::after(*ctx.stopwatch, ctx.time_left(), deadline_ == VisionDeadline::kCpu);
+  const vision::VisionResult& r = pipeline_->process(frame, head_at(frame.capture_time), deadline, ctx.degrade_level);
+  ++stats_.frames;
+  cost_ = kNoFrameCost + vision::modelled_cost(r.work);
+  if (r.status != vision::VisionStatus::kOk) {
+    ++stats_.bad_frames;
+    return;
+  }
+  stats_.lines += r.line_count;
+  if (r.line_count > 0) ++stats_.with_lines;
+  if (r.ball.seen) ++stats_.with_ball;
+  if (r.cut.deadline_hit) ++stats_.cut;
+  if (r.degrade_level > 0) ++stats_.degraded;
+  board_.post(vision::to_field_lines(r));
+  board_.post(vision::to_ball_belief(r));
+}
+
+}  // namespace ringlet::firmware
