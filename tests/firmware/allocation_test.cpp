@@ -37,7 +37,7 @@ TEST(NoAllocation, FullSimulatedStackAllocatesNothingInTheCycle) {
   }
   EXPECT_EQ(allocations, 0U) << "operator new was called inside the cycle";
   EXPECT_EQ(exec.frame_stats().frames, 1 + kFrames);
-  EXPECT_GT(stack.mission().goals_reached(), 0U) << "the robot must actually drive during the counted frames";
+  EXPECT_GT(stack.telemetry().goals_reached(), 0U) << "the robot must actually drive during the counted frames";
 }
 
 TEST(NoAllocation, CameraAndVisionAllocateNothingEither) {
@@ -54,9 +54,9 @@ TEST(NoAllocation, CameraAndVisionAllocateNothingEither) {
     allocations = counter.count();
   }
   EXPECT_EQ(allocations, 0U) << "operator new was called while the camera and vision ran";
-  ASSERT_NE(stack.vision(), nullptr);
-  EXPECT_GT(stack.vision()->stats().frames, 190U);
-  EXPECT_GT(stack.vision()->stats().lines, 0U);
+  ASSERT_NE(stack.telemetry().vision(), nullptr);
+  EXPECT_GT(stack.telemetry().vision()->frames, 190U);
+  EXPECT_GT(stack.telemetry().vision()->lines, 0U);
 }
 
 }  // namespace

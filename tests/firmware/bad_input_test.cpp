@@ -113,7 +113,7 @@ TEST(CommandLine, SeedAcceptsTheWholeRange) {
 
 TEST(RunLength, ShippedConfigurationAcceptsADay) {
   const auto cfg = load_config(test::kShippedConfig);
-  EXPECT_EQ(run_length_problem(cfg, cfg.timeout_s), "");
+  EXPECT_EQ(run_length_problem(cfg, cfg.mission.timeout_s), "");
   EXPECT_EQ(run_length_problem(cfg, kMaxRunSeconds), "") << "10 ms, a sample every 10 frames: 864,002 samples";
   EXPECT_NE(run_length_problem(cfg, std::nan("")).find("got nan"), std::string::npos);
   EXPECT_NE(run_length_problem(cfg, 1e300).find("at most 86400"), std::string::npos);
@@ -138,7 +138,7 @@ TEST(RunLength, TimeoutThatWouldNotFitIsAConfigError) {
 TEST(RunLength, TelemetryNeverReservesBeyondTheCap) {
   // 2^40 poses would be 24 TiB: a capacity no configuration is allowed to ask for.
   std::optional<Telemetry> telemetry;
-  ASSERT_NO_THROW(telemetry.emplace(std::size_t{1} << 40, 16, 1));
+  ASSERT_NO_THROW(telemetry.emplace(std::size_t{1} << 40, 16));
   Telemetry& t = *telemetry;
   for (int i = 0; i < 3; ++i) t.record_pose(hal::Pose2{});
   EXPECT_EQ(t.trajectory().size(), 3U);
@@ -186,7 +186,7 @@ TEST(InputFiles, WorldThatIsADeviceOrDirectoryIsNotRead) {
 
 TEST(InputFiles, UnreadableWorldNamesTheConfigKeyThatNamedIt) {
   const auto cfg = load_config(kData / "world_dev_zero.toml");
-  const std::string m = error_of<sim_hal::WorldError>([&] { FirmwareStack stack(cfg); });
+  const std::string m = error_of<ConfigError>([&] { FirmwareStack stack(cfg); });
   EXPECT_EQ(m, (kData / "world_dev_zero.toml").string() +
                    ":3:9: sim.world: /dev/zero: cannot read world file: not a regular file (a character device)");
 }
@@ -207,16 +207,15 @@ TEST(ConfigPositions, UnknownTaskNamesItsRow) {
   const auto cfg = load_config(kData / "unknown_task.toml");
   const std::string m = error_of<ConfigError>([&] { FirmwareStack stack(cfg); });
   const std::string file = (kData / "unknown_task.toml").string();
-  EXPECT_EQ(m.rfind(file + ":6:9: executive.tasks: the table does not match the firmware's tasks:", 0), 0U) << m;
-  EXPECT_NE(m.find("\n  - " + file + ":7:12: executive.tasks[0].name: task 'senze' is not a task this firmware provides"),
+  EXPECT_EQ(m.rfind(file + ":6:9: executive.tasks: the table names unknown tasks:", 0), 0U) << m;
+  EXPECT_NE(m.find("\n  - " + file + ":7:12: executive.tasks[0].name: task 'senze' is not a task this firmware has ("),
             std::string::npos)
       << m;
-  EXPECT_NE(m.find("\n  - task 'sense' is missing from the table"), std::string::npos) << m;
 }
 
 TEST(ConfigPositions, StartPoseCollisionNamesTheWorldLineAndTheRadius) {
   const auto cfg = load_config(kData / "start_collides.toml");
-  const std::string m = error_of<sim_hal::WorldError>([&] { FirmwareStack stack(cfg); });
+  const std::string m = error_of<ConfigError>([&] { FirmwareStack stack(cfg); });
   EXPECT_EQ(m, (kData / "start_collides.world").string() +
                    ":5: start pose (2, 2) collides with an obstacle or the bounds for a robot of radius 0.25 m "
                    "(sim.robot_radius, " +
@@ -224,9 +223,8 @@ TEST(ConfigPositions, StartPoseCollisionNamesTheWorldLineAndTheRadius) {
 }
 
 TEST(ConfigPositions, CanBackendNamesTheKey) {
-  const auto cfg = load_config(kData / "can_backend.toml");
-  const std::string m = error_of<ConfigError>([&] { FirmwareStack stack(cfg); });
-  EXPECT_EQ(m.rfind((kData / "can_backend.toml").string() + ":4:11: robot.backend: \"can\" is not available", 0), 0U)
+  const std::string m = error_of<ConfigError>([] { (void)load_config(kData / "can_backend.toml"); });
+  EXPECT_EQ(m.rfind((kData / "can_backend.toml").string() + ":4:11: robot.backend: must be one of \"sim\"", 0), 0U)
       << m;
 }
 
@@ -318,7 +316,7 @@ TEST(Signals, InterruptedRunIsASafeStateWithTheSignalNamedAndExitCode128PlusN) {
   std::atomic<bool> interrupt{true};  // as the handler leaves it: interrupt and the executive's stop flag
   stack.executive().request_stop();
   std::ostringstream log;
-  auto outcome = run_mission(stack, cfg.timeout_s, interrupt, log);
+  auto outcome = run_mission(stack, cfg.mission.timeout_s, interrupt, log);
   outcome.signal = SIGTERM;
   const auto s = summarize(stack, outcome, false);
   EXPECT_TRUE(s.interrupted);

@@ -26,16 +26,26 @@ TEST(FirmwareConfig, ShippedConfigLoads) {
   const auto cfg = load_config(test::kShippedConfig);
   EXPECT_EQ(cfg.backend, "sim");
   EXPECT_EQ(cfg.executive.period, hal::Nanos{10'000'000});
-  ASSERT_EQ(cfg.tasks.size(), 5U);
+  ASSERT_EQ(cfg.tasks.size(), 7U);
   EXPECT_EQ(cfg.tasks[0].name, "sense");
-  EXPECT_TRUE(std::filesystem::exists(cfg.world)) << cfg.world;
+  ASSERT_NE(cfg.backend_settings, nullptr);
+  EXPECT_EQ(cfg.backend_settings->source_name(), "courtyard.world");
+  EXPECT_EQ(cfg.seed(), 42U);
+  ASSERT_EQ(cfg.mission.goals.size(), 7U) << "the mission's goals come from the configuration";
+  EXPECT_EQ(cfg.mission.goals[0].x, 2.0);
+  EXPECT_EQ(cfg.mission.goals[6].y, 2.5);
+}
+
+TEST(FirmwareConfig, SeedOverrideWinsOverTheBackends) {
+  auto cfg = load_config(test::kShippedConfig);
+  cfg.seed_override = 7;
+  EXPECT_EQ(cfg.seed(), 7U);
 }
 
 TEST(FirmwareConfig, SplConfigHasTheCameraAndAVisionTask) {
   const auto cfg = load_config(test::kSplConfig);
-  EXPECT_TRUE(cfg.camera.enabled);
-  EXPECT_TRUE(cfg.sim.camera.enabled) << "the sim camera gets the [camera] settings";
-  EXPECT_EQ(cfg.sim.camera.intrinsics.width, 640);
+  EXPECT_EQ(cfg.camera.backend, "robot") << "the simulator renders the camera";
+  EXPECT_EQ(cfg.camera.intrinsics.width, 640);
   EXPECT_EQ(cfg.vision.max_trials, 30);
   EXPECT_EQ(cfg.vision.skip, 10);
   const auto vision = std::find_if(cfg.tasks.begin(), cfg.tasks.end(), [](const auto& t) { return t.name == "vision"; });
@@ -48,7 +58,6 @@ TEST(FirmwareConfig, SplConfigHasTheCameraAndAVisionTask) {
 TEST(FirmwareConfig, EightyThreeHertzByConfiguration) {
   const auto cfg = parse_as_shipped(with_line(shipped_config_text(), "period_us", "period_us = 12000"));
   EXPECT_EQ(cfg.executive.period, hal::Nanos{12'000'000});
-  EXPECT_EQ(cfg.sim.period, hal::Nanos{12'000'000}) << "the simulator steps by the executive's period";
 }
 
 TEST(FirmwareConfig, MissingFileNamesIt) {
@@ -78,7 +87,7 @@ TEST_P(BadConfig, IsRefusedWithFileLineAndKey) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, BadConfig,
     ::testing::Values(
-        BadCase{"backend", "backend = \"ros\"", "robot.backend: must be one of \"sim\", \"can\", got \"ros\""},
+        BadCase{"backend", "backend = \"ros\"", "robot.backend: must be one of \"sim\", got \"ros\""},
         BadCase{"seed", "seed = -3", "sim.seed: must be a non-negative integer"},
         BadCase{"max_speed", "max_speed = \"fast\"", "sim.max_speed: must be a number"},
         BadCase{"laser_beams", "laser_beams = 5000", "sim.laser_beams: must be between 1 and 721"},
@@ -100,8 +109,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "policy: must be one of \"warn\", \"skip\", \"degrade\", \"failsafe\""},
         BadCase{"min_speed", "min_speed = 5.0", "follower.min_speed: must not exceed max_speed"},
         BadCase{"release_range_m", "release_range_m = 0.5", "safety.release_range_m: must be larger than stop_range_m"},
-        BadCase{"[telemetry]", "[camera]\nenabled = true\nwidth = 641\n[telemetry]", "camera.width: must be even"},
-        BadCase{"[telemetry]", "[camera]\nenabled = true\nbackend = \"opencv\"\n[telemetry]",
+        BadCase{"[telemetry]", "[camera]\nwidth = 641\n[telemetry]", "camera.width: must be even"},
+        BadCase{"[telemetry]", "[camera]\nbackend = \"opencv\"\n[telemetry]",
                 "camera.source: the \"opencv\" camera needs a source"},
         BadCase{"[telemetry]", "[camera]\nformat = \"rgb565\"\n[telemetry]", "camera.format: must be one of \"yuyv\", \"bgr\""},
         BadCase{"[telemetry]", "[vision]\nskip = 0\n[telemetry]", "vision.skip: must be between 1 and 1000"},

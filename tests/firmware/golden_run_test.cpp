@@ -33,7 +33,7 @@ MissionSummary run(const std::string& text, const char* name) {
   FirmwareStack stack(cfg);
   std::atomic<bool> interrupt{false};
   std::ostringstream log;
-  const auto outcome = run_mission(stack, cfg.timeout_s, interrupt, log);
+  const auto outcome = run_mission(stack, cfg.mission.timeout_s, interrupt, log);
   auto s = summarize(stack, outcome, stack.executive().failsafe_triggered() || outcome.watchdog_fired);
   std::printf("%s: trajectory hash %016llx  run hash %016llx  (%.2f s simulated, %.2f s host)\n", name, static_cast<unsigned long long>(s.trajectory_hash),
               static_cast<unsigned long long>(s.run_hash), s.mission_seconds, s.wall_seconds);
