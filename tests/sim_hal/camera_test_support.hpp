@@ -18,7 +18,6 @@ inline World open_field() {
   world.min = {-5.0, -4.0};
   world.max = {5.0, 4.0};
   world.start = {0.0, 0.0, 0.0};
-  world.goals = {{1.0, 1.0}};
   return world;
 }
 

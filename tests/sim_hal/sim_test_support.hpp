@@ -8,14 +8,13 @@
 
 namespace ringlet::sim_hal::test {
 
-/// An empty walled rectangle from (0, 0) to (width, height) with one goal, robot at `start`.
+/// An empty walled rectangle from (0, 0) to (width, height), robot at `start`.
 inline World box_world(double width, double height, hal::Pose2 start) {
   World world;
   world.name = "box";
   world.min = {0.0, 0.0};
   world.max = {width, height};
   world.start = start;
-  world.goals = {{width / 2.0, height / 2.0}};
   return world;
 }
 

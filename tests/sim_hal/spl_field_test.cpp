@@ -1,14 +1,14 @@
-// The shipped SPL field: its markings match the rule book's dimensions, and the plain waypoint
-// follower (the Mission machine's controller) drives its goal loop without touching anything and
-// without the laser ever seeing something closer than the Safety machine's 0.9 m.
+// The shipped SPL field world on its own: its markings match the rule book's dimensions, and it
+// has the posts, robots, ball and sunlight the vision scenario needs. Its mission (the goal loop,
+// its clearance from the obstacles, and a waypoint follower driving it with the laser clear of the
+// Safety machine's stop range) is the firmware configuration's: see
+// tests/firmware/mission_path_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <numbers>
 
-#include "ringlet/sim_hal/sim_robot.hpp"
+#include "ringlet/sim_hal/world.hpp"
 
 namespace ringlet::sim_hal {
 namespace {
@@ -46,56 +46,10 @@ TEST(SimSplField, RuleBookDimensions) {
                                     [](const Circle& c) { return c.kind == ObstacleKind::kRobot; });
   EXPECT_EQ(posts, 4);
   EXPECT_GE(robots, 3);
+  EXPECT_TRUE(w.polygons.empty());  // every obstacle is round: posts and robots
   EXPECT_TRUE(w.ball.has_value());
   EXPECT_GT(w.lighting.sun_strength, 0.0);
 }
 
-double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const double dx = b.x - a.x;
-  const double dy = b.y - a.y;
-  const double t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
-
-TEST(SimSplField, ObstaclesKeepClearOfTheGoalLines) {
-  const World w = spl_field();
-  EXPECT_TRUE(w.polygons.empty());
-  Vec2 from{w.start.x, w.start.y};
-  for (std::size_t i = 0; i < w.goals.size(); ++i) {
-    for (const Circle& c : w.circles) {
-      EXPECT_GE(point_segment_distance(c.centre, from, w.goals[i]) - c.radius, 1.2)
-          << "goal " << i + 1 << ", obstacle at " << c.centre.x << ", " << c.centre.y;
-    }
-    from = w.goals[i];
-  }
-}
-
-TEST(SimSplField, WaypointFollowerDrivesTheLoopAndTheLaserStaysClear) {
-  SimRobot robot(spl_field(), SimConfig{});
-  const std::vector<Vec2>& goals = robot.world().goals;
-  std::size_t next = 0;
-  double nearest = std::numeric_limits<double>::infinity();
-  hal::SensorFrame frame;
-  while (next < goals.size() && robot.steps() < 20'000) {
-    robot.sensors().read(frame);
-    for (std::size_t i = 0; i < frame.laser.beam_count; ++i) {
-      if (frame.laser.valid[i]) nearest = std::min(nearest, static_cast<double>(frame.laser.range[i]));
-    }
-    const hal::Pose2& pose = frame.pose.pose;
-    if (std::hypot(goals[next].x - pose.x, goals[next].y - pose.y) < 0.3) {
-      ++next;
-      continue;
-    }
-    const double error = hal::wrap_angle(hal::bearing_to(pose, goals[next].x, goals[next].y) - pose.theta);
-    hal::ActuatorCommand cmd;
-    cmd.drive.curvature = std::clamp(2.0 * error, -2.0, 2.0);
-    cmd.drive.velocity = std::max(0.2, 1.0 - std::fabs(error) / (std::numbers::pi / 2.0));
-    robot.actuators().write(cmd);
-  }
-  EXPECT_EQ(next, goals.size());
-  EXPECT_EQ(robot.collisions(), 0U);
-  EXPECT_GT(nearest, 0.9);  // the Safety machine's stop distance
-}
-
 }  // namespace
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

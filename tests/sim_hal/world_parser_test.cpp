@@ -40,30 +40,28 @@ TEST(SimWorldParser, ReadsEveryStatement) {
   ASSERT_TRUE(world.ball.has_value());
   EXPECT_EQ(world.ball->position.x, 1.5);
   EXPECT_EQ(world.ball->radius, 0.05);  // the default
-
-  ASSERT_EQ(world.goals.size(), 3U);
-  EXPECT_EQ(world.goals[0].x, 4.0);
-  EXPECT_EQ(world.goals[2].y, -1.5);
 }
 
+// Header, bounds and start are all a world needs: goals are the mission's (firmware configuration).
 TEST(SimWorldParser, MinimalWorldHasNoOptionalParts) {
-  const World world = parse_world("ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0\ngoal 5 5", "min.world");
+  const World world = parse_world("ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0", "min.world");
   EXPECT_TRUE(world.name.empty());
   EXPECT_TRUE(world.circles.empty());
   EXPECT_TRUE(world.polygons.empty());
   EXPECT_TRUE(world.markings.empty());
   EXPECT_FALSE(world.ball.has_value());
-  EXPECT_EQ(world.goals.size(), 1U);
+  EXPECT_TRUE(world.rings.empty());
+  EXPECT_EQ(world.start_line, 3);
 }
 
 TEST(SimWorldParser, AcceptsWindowsLineEndingsAndTabs) {
-  const World world = parse_world("ringlet-world 1\r\nbounds\t0 0 10 10\r\nstart 1 1 -90\r\ngoal 5 5\r\n", "crlf.world");
+  const World world = parse_world("ringlet-world 1\r\nbounds\t0 0 10 10\r\nstart 1 1 -90\r\n", "crlf.world");
   EXPECT_EQ(world.max.y, 10.0);
   EXPECT_DOUBLE_EQ(world.start.theta, -std::numbers::pi / 2.0);
 }
 
 TEST(SimWorldParser, WrapsTheStartHeading) {
-  const World world = parse_world("ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 270\ngoal 5 5\n", "w");
+  const World world = parse_world("ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 270\n", "w");
   EXPECT_DOUBLE_EQ(world.start.theta, -std::numbers::pi / 2.0);
 }
 
@@ -71,7 +69,7 @@ TEST(SimWorldParser, WrapsTheStartHeading) {
 // radians, and the heading became NaN.
 TEST(SimWorldParser, HugeFiniteAnglesStayFinite) {
   const World world = parse_world(
-      "ringlet-world 2\nbounds 0 0 10 10\nstart 1 1 1e308\nlighting 1 0.1 0.3 2 -1e308\ngoal 5 5\n", "w");
+      "ringlet-world 2\nbounds 0 0 10 10\nstart 1 1 1e308\nlighting 1 0.1 0.3 2 -1e308\n", "w");
   EXPECT_TRUE(std::isfinite(world.start.theta));
   EXPECT_LE(std::abs(world.start.theta), std::numbers::pi);
   EXPECT_TRUE(std::isfinite(world.lighting.sun_angle));
@@ -107,22 +105,27 @@ struct BadWorld {
 };
 
 // Lines 1-4 of a valid world; most cases append their bad line as line 5.
-const std::string kHead = "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0\ngoal 5 5\n";
-const std::string kHead2 = "ringlet-world 2\nbounds 0 0 10 10\nstart 1 1 0\ngoal 5 5\n";
+const std::string kHead = "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0\n# line 4\n";
+const std::string kHead2 = "ringlet-world 2\nbounds 0 0 10 10\nstart 1 1 0\n# line 4\n";
+// Lines 1-4 of a world still missing its start, for the cases whose bad line is the start.
+const std::string kHeadNoStart = "ringlet-world 1\nbounds 0 0 10 10\n# no start yet\n# line 4\n";
 
 const BadWorld kBadWorlds[] = {
     {"unknown_keyword", kHead + "cirle 1 2 3\n", "t.world:5: ", "unknown keyword 'cirle'"},
     {"quoted_keyword", kHead + "\"circle\" 1 2 3\n", "t.world:5: ", "unknown keyword \"circle\""},
-    {"too_few_arguments", kHead + "goal 1\n", "t.world:5: ", "goal: expected 2 arguments (x y), got 1"},
+    {"too_few_arguments", kHeadNoStart + "start 1\n", "t.world:5: ",
+     "start: expected 3 arguments (x y heading_deg), got 1"},
     {"circle_too_few", kHead + "circle 1 2\n", "t.world:5: ",
      "circle: expected 3 to 5 arguments (x y radius [height [kind]]), got 2"},
-    {"too_many_arguments", kHead + "goal 1 2 3\n", "t.world:5: ", "goal: expected 2 arguments (x y), got 3"},
+    {"too_many_arguments", kHeadNoStart + "start 1 2 3 4\n", "t.world:5: ",
+     "start: expected 3 arguments (x y heading_deg), got 4"},
+    {"ball_too_many", kHead + "ball 1 2 0.1 4\n", "t.world:5: ", "ball: expected 2 or 3 arguments (x y [radius]), got 4"},
     {"optional_argument_count", kHead + "marking 1 1 2\n", "t.world:5: ",
      "marking: expected 4 or 5 arguments (x1 y1 x2 y2 [width]), got 3"},
     {"trailing_junk", kHead + "circle 1 2 1.5m\n", "t.world:5: ", "circle: radius is not a number: '1.5m'"},
-    {"word_for_number", kHead + "goal five 5\n", "t.world:5: ", "goal: x is not a number: 'five'"},
-    {"quoted_number", kHead + "goal \"5\" 5\n", "t.world:5: ", "goal: x is not a number: '\"5\"'"},
-    {"double_sign", kHead + "goal +-5 5\n", "t.world:5: ", "goal: x is not a number: '+-5'"},
+    {"word_for_number", kHead + "ball five 5\n", "t.world:5: ", "ball: x is not a number: 'five'"},
+    {"quoted_number", kHead + "ball \"5\" 5\n", "t.world:5: ", "ball: x is not a number: '\"5\"'"},
+    {"double_sign", kHead + "ball +-5 5\n", "t.world:5: ", "ball: x is not a number: '+-5'"},
     {"infinite", kHead + "circle 1 2 inf\n", "t.world:5: ", "circle: radius must be finite, got 'inf'"},
     {"not_a_number", kHead + "ball nan 2\n", "t.world:5: ", "ball: x must be finite, got 'nan'"},
     {"out_of_range", kHead + "circle 1 1e999 1\n", "t.world:5: ", "circle: y is out of range: '1e999'"},
@@ -131,9 +134,9 @@ const BadWorld kBadWorlds[] = {
     {"ball_radius", kHead + "ball 5 7 -0.1\n", "t.world:5: ", "ball: radius must be > 0, got -0.1"},
     {"marking_width", kHead + "marking 1 1 2 2 0\n", "t.world:5: ", "marking: width must be > 0, got 0"},
     {"marking_no_length", kHead + "marking 1 1 1 1\n", "t.world:5: ", "marking: the two end points are the same"},
-    {"bounds_x_reversed", "ringlet-world 1\nbounds 5 0 3 10\nstart 1 1 0\ngoal 4 4\n", "t.world:2: ",
+    {"bounds_x_reversed", "ringlet-world 1\nbounds 5 0 3 10\nstart 1 1 0\n", "t.world:2: ",
      "bounds: xmin (5) must be < xmax (3)"},
-    {"bounds_y_empty", "ringlet-world 1\nbounds 0 2 10 2\nstart 1 1 0\ngoal 4 4\n", "t.world:2: ",
+    {"bounds_y_empty", "ringlet-world 1\nbounds 0 2 10 2\nstart 1 1 0\n", "t.world:2: ",
      "bounds: ymin (2) must be < ymax (2)"},
     {"bounds_arguments", "ringlet-world 1\nbounds 0 0 10\n", "t.world:2: ",
      "bounds: expected 4 arguments (xmin ymin xmax ymax), got 3"},
@@ -146,7 +149,7 @@ const BadWorld kBadWorlds[] = {
     {"name_two_strings", kHead + "name \"a\" \"b\"\n", "t.world:5: ", "name: expected one quoted string"},
     {"unterminated_string", kHead + "name \"Court\n", "t.world:5: ", "unterminated quoted string"},
     {"text_after_string", kHead + "name \"Court\"yard\n", "t.world:5: ", "unexpected text right after a quoted string"},
-    {"missing_header", "bounds 0 0 10 10\nstart 1 1 0\ngoal 5 5\n", "t.world:1: ",
+    {"missing_header", "bounds 0 0 10 10\nstart 1 1 0\n", "t.world:1: ",
      "missing header: the first line must be 'ringlet-world 2', got 'bounds'"},
     {"missing_header_after_comments", "# a world\n\n   \nbounds 0 0 10 10\n", "t.world:4: ", "missing header"},
     {"empty_file", "", "t.world:1: ", "end of file: missing header 'ringlet-world 2'"},
@@ -187,13 +190,16 @@ const BadWorld kBadWorlds[] = {
      "lighting: given twice (first on line 5)"},
     {"fractional_version", "ringlet-world 1.0\n", "t.world:1: ", "ringlet-world: version must be an integer, got '1.0'"},
     {"missing_version", "ringlet-world\n", "t.world:1: ", "ringlet-world: expected 1 argument (version), got 0"},
-    {"missing_bounds", "ringlet-world 1\nstart 1 1 0\ngoal 2 2\n", "t.world:3: ", "end of file: missing 'bounds"},
-    {"missing_start", "ringlet-world 1\nbounds 0 0 10 10\ngoal 2 2", "t.world:3: ", "end of file: missing 'start"},
-    {"missing_goal", "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0\n# the end\n", "t.world:4: ",
-     "end of file: missing 'goal <x> <y>' (at least one is required)"},
-    {"goal_outside", "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 0\ngoal 11 5\n", "t.world:4: ",
-     "goal: (11, 5) is outside the bounds 0 0 10 10 (line 2)"},
-    {"start_outside_before_bounds", "ringlet-world 1\nstart -1 1 0\nbounds 0 0 10 10\ngoal 5 5\n", "t.world:2: ",
+    {"missing_bounds", "ringlet-world 1\nstart 1 1 0\nball 2 2\n", "t.world:3: ", "end of file: missing 'bounds"},
+    {"missing_start", "ringlet-world 1\nbounds 0 0 10 10\nball 2 2", "t.world:3: ", "end of file: missing 'start"},
+    // Goals left the world format: an old file that still lists them is told where they go now.
+    {"goal_refused", kHead + "goal 1 2\n", "t.world:5: ",
+     "goal: goals belong to the mission, not the world: list them under [mission] goals in the firmware "
+     "configuration"},
+    {"goal_refused_before_the_end", "ringlet-world 1\ngoal 1 2\n", "t.world:2: ", "goal: goals belong to the mission"},
+    {"start_outside", "ringlet-world 1\nbounds 0 0 10 10\nstart 11 5 0\n", "t.world:3: ",
+     "start: (11, 5) is outside the bounds 0 0 10 10 (line 2)"},
+    {"start_outside_before_bounds", "ringlet-world 1\nstart -1 1 0\nbounds 0 0 10 10\n", "t.world:2: ",
      "start: (-1, 1) is outside the bounds"},
     {"circle_outside", kHead + "circle 12 5 1\n", "t.world:5: ", "circle: centre (12, 5) is outside the bounds"},
     {"polygon_vertex_outside", kHead + "polygon 1 1 2 1 2 -3\n", "t.world:5: ",
@@ -209,7 +215,7 @@ const BadWorld kBadWorlds[] = {
     {"polygon_odd_coordinates", kHead + "polygon 1 1 2 2 3\n", "t.world:5: ",
      "polygon: expected x y pairs, got an odd number of coordinates (5)"},
     {"polygon_bad_number", kHead + "polygon 1 1 2 2 3 x\n", "t.world:5: ", "polygon: y3 is not a number: 'x'"},
-    {"start_heading", "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 north\ngoal 5 5\n", "t.world:3: ",
+    {"start_heading", "ringlet-world 1\nbounds 0 0 10 10\nstart 1 1 north\n", "t.world:3: ",
      "start: heading_deg is not a number: 'north'"},
 };
 

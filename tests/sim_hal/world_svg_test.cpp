@@ -1,5 +1,6 @@
-// The SVG picture: what is drawn (goals, trajectory, collisions), that y points up, that output
-// is deterministic, and that a file that cannot be written is reported.
+// The SVG picture: what is drawn (the mission's goals, trajectory, collisions: all from the
+// hal::RunPicture, none from the world), that y points up, that output is deterministic, and that
+// a file that cannot be written is reported.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -32,12 +33,21 @@ std::string attribute(const std::string& text, const std::string& name, std::siz
 World picture_world() {
   World world = test::box_world(20.0, 10.0, {1.0, 1.0, 0.0});
   world.name = "Yard <A & B>";
-  world.goals = {{5.0, 5.0}, {15.0, 8.0}, {15.0, 2.0}, {5.0, 2.0}};
   world.circles.push_back({{10.0, 5.0}, 1.0});
   world.polygons.push_back({{{2.0, 7.0}, {4.0, 7.0}, {3.0, 9.0}}});
   world.markings.push_back({{1.0, 5.0}, {19.0, 5.0}, 0.05});
   world.ball = Ball{{12.0, 3.0}, 0.05};
   return world;
+}
+
+/// The mission's goals for picture_world(), in order.
+const std::vector<hal::WorldPoint> kGoals = {{5.0, 5.0}, {15.0, 8.0}, {15.0, 2.0}, {5.0, 2.0}};
+
+/// A picture of a run with the four goals, none reached yet.
+hal::RunPicture with_goals() {
+  hal::RunPicture picture;
+  picture.goals = kGoals;
+  return picture;
 }
 
 std::vector<hal::Pose2> spiral(std::size_t n) {
@@ -49,7 +59,7 @@ std::vector<hal::Pose2> spiral(std::size_t n) {
   return poses;
 }
 
-std::string render(const World& world, const RunOverlay& overlay) {
+std::string render(const World& world, const hal::RunPicture& overlay) {
   std::ostringstream out;
   write_world_svg(out, world, overlay);
   return out.str();
@@ -57,7 +67,7 @@ std::string render(const World& world, const RunOverlay& overlay) {
 
 TEST(SimSvg, DrawsGoalsReachedAndPending) {
   const World world = picture_world();
-  RunOverlay overlay;
+  hal::RunPicture overlay = with_goals();
   overlay.goals_reached = 3;
   const std::string svg = render(world, overlay);
   EXPECT_EQ(count(svg, "<circle class=\"goal reached\""), 3U);
@@ -66,10 +76,18 @@ TEST(SimSvg, DrawsGoalsReachedAndPending) {
   EXPECT_EQ(svg.find(">5</text>"), std::string::npos);
 }
 
+// The world has no goals of its own: a picture without the mission's shows none.
+TEST(SimSvg, DrawsNoGoalsWhenThePictureHasNone) {
+  const std::string svg = render(picture_world(), hal::RunPicture{});
+  EXPECT_EQ(count(svg, "class=\"goal"), 0U);
+  EXPECT_EQ(svg.find(">1</text>"), std::string::npos);
+  EXPECT_EQ(count(svg, "class=\"obstacle\""), 2U);  // the world itself is still drawn
+}
+
 TEST(SimSvg, TrajectoryIsOnePolylineWithEveryPoint) {
   const World world = picture_world();
   const std::vector<hal::Pose2> poses = spiral(57);
-  RunOverlay overlay;
+  hal::RunPicture overlay;
   overlay.trajectory = poses;
   const std::string svg = render(world, overlay);
   ASSERT_EQ(count(svg, "<polyline class=\"trajectory\""), 1U);
@@ -83,7 +101,7 @@ TEST(SimSvg, TrajectoryIsOnePolylineWithEveryPoint) {
 
 TEST(SimSvg, ScaleIsAbout900PixelsAndYPointsUp) {
   const World world = picture_world();
-  const std::string svg = render(world, RunOverlay{});
+  const std::string svg = render(world, with_goals());
   // The 20 m wide world is 900 px wide: 45 px per metre, goal 1 at (5, 5) and goal 2 at (15, 8).
   const std::size_t first = svg.find("<circle class=\"goal\"");
   const std::size_t second = svg.find("<circle class=\"goal\"", first + 1);
@@ -97,8 +115,8 @@ TEST(SimSvg, ScaleIsAbout900PixelsAndYPointsUp) {
 
 TEST(SimSvg, DrawsEveryKindOfThing) {
   const World world = picture_world();
-  const std::vector<Vec2> hits = {{10.0, 3.8}, {3.0, 6.6}, {18.0, 9.0}};
-  RunOverlay overlay;
+  const std::vector<hal::WorldPoint> hits = {{10.0, 3.8}, {3.0, 6.6}, {18.0, 9.0}};
+  hal::RunPicture overlay = with_goals();
   overlay.collisions = hits;
   overlay.caption = "mission: 3/4 goals & 3 collisions <bad>";
   const std::string svg = render(world, overlay);
@@ -120,7 +138,7 @@ TEST(SimSvg, DrawsEveryKindOfThing) {
 TEST(SimSvg, DrawsPaintedRingsAsCirclesOnGrass) {
   World world = test::box_world(10.0, 10.0, {1.0, 1.0, 0.0});
   world.rings.push_back(Ring{{5.0, 5.0}, 0.75, 0.05});
-  const std::string svg = render(world, RunOverlay{});
+  const std::string svg = render(world, hal::RunPicture{});
   EXPECT_EQ(count(svg, "class=\"marking\""), 1U);
   EXPECT_NE(svg.find("fill=\"none\" stroke=\"#ffffff\""), std::string::npos);
   EXPECT_NE(svg.find("fill=\"#6aa84f\""), std::string::npos);
@@ -129,8 +147,8 @@ TEST(SimSvg, DrawsPaintedRingsAsCirclesOnGrass) {
 TEST(SimSvg, IsDeterministicAndTheFileMatchesTheStream) {
   const World world = picture_world();
   const std::vector<hal::Pose2> poses = spiral(200);
-  const std::vector<Vec2> hits = {{10.0, 3.8}};
-  RunOverlay overlay{poses, hits, 2, "caption"};
+  const std::vector<hal::WorldPoint> hits = {{10.0, 3.8}};
+  const hal::RunPicture overlay{poses, hits, kGoals, 2, "caption"};
   const std::string first = render(world, overlay);
   EXPECT_EQ(first, render(world, overlay));
 
@@ -145,7 +163,7 @@ TEST(SimSvg, IsDeterministicAndTheFileMatchesTheStream) {
 TEST(SimSvg, UnwritableFileNamesThePath) {
   const std::filesystem::path path = "/nonexistent-ringlet-dir/picture.svg";
   try {
-    write_world_svg(path, picture_world(), RunOverlay{});
+    write_world_svg(path, picture_world(), with_goals());
     FAIL() << "no exception";
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), path.string() + ": cannot write SVG: No such file or directory");
