@@ -1,14 +1,53 @@
+// The camera model as rotations and transforms: the head's rotation is Rz(yaw)·Ry(pitch), the
+// camera's axes are a fixed permutation of the head's, and a CameraPose stores the columns of the
+// camera→robot rotation (its `axes`) with the camera's position. Eigen does the products; the
+// types are fixed-size (3×3, 3-vectors) and live on the stack, so nothing here allocates.
 #include "ringlet/hal/camera_geometry.hpp"
 
+#include <Eigen/Core>
 #include <cmath>
 
 namespace ringlet::hal {
 namespace {
 
-Vec3 add(const Vec3& a, const Vec3& b) noexcept { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec3 sub(const Vec3& a, const Vec3& b) noexcept { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3 scale(double s, const Vec3& a) noexcept { return {s * a.x, s * a.y, s * a.z}; }
-double dot(const Vec3& a, const Vec3& b) noexcept { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Eigen::Vector3d to_eigen(const Vec3& v) noexcept { return {v.x, v.y, v.z}; }
+Vec3 to_vec3(const Eigen::Vector3d& v) noexcept { return {v.x(), v.y(), v.z()}; }
+
+// The elementary rotations written out rather than built through AngleAxis or a quaternion: their
+// entries are exactly ±sin, ±cos, 0 and 1, so the products below stay exact where they can.
+Eigen::Matrix3d rotation_z(double angle) noexcept {
+  const double c = std::cos(angle), s = std::sin(angle);
+  Eigen::Matrix3d r;
+  r << c, -s, 0.0,  //
+      s, c, 0.0,    //
+      0.0, 0.0, 1.0;
+  return r;
+}
+
+Eigen::Matrix3d rotation_y(double angle) noexcept {
+  const double c = std::cos(angle), s = std::sin(angle);
+  Eigen::Matrix3d r;
+  r << c, 0.0, s,  //
+      0.0, 1.0, 0.0,  //
+      -s, 0.0, c;
+  return r;
+}
+
+// Camera axes in the head frame, as columns: right = −head y, down = −head z, forward = head x.
+Eigen::Matrix3d camera_in_head() noexcept {
+  Eigen::Matrix3d p;
+  p << 0.0, 0.0, 1.0,  //
+      -1.0, 0.0, 0.0,  //
+      0.0, -1.0, 0.0;
+  return p;
+}
+
+// The camera→robot rotation: its columns are the pose's axes.
+Eigen::Matrix3d camera_to_robot(const CameraPose& pose) noexcept {
+  Eigen::Matrix3d r;
+  for (int i = 0; i < 3; ++i) r.col(i) = to_eigen(pose.axes[static_cast<std::size_t>(i)]);
+  return r;
+}
 
 }  // namespace
 
@@ -26,24 +65,22 @@ CameraIntrinsics CameraIntrinsics::from_fov(int width, int height, double hfov_d
 CameraPose CameraPose::from_head(const CameraMount& mount, const HeadJoints& head) noexcept {
   // Head axes in the robot frame: R = Rz(yaw) · Ry(pitch); a positive rotation about y tips the
   // x axis down, which is what a positive (downward) pitch does.
-  const double cy = std::cos(head.yaw), sy = std::sin(head.yaw);
-  const double cp = std::cos(head.pitch), sp = std::sin(head.pitch);
-  const Vec3 head_x{cy * cp, sy * cp, -sp};
-  const Vec3 head_y{-sy, cy, 0.0};
-  const Vec3 head_z{cy * sp, sy * sp, cp};
+  const Eigen::Matrix3d head_to_robot = rotation_z(head.yaw) * rotation_y(head.pitch);
+  const Eigen::Vector3d pivot{0.0, 0.0, mount.pivot_height};
+  const Eigen::Vector3d camera_in_head_frame{mount.forward, 0.0, mount.up};
+  const Eigen::Matrix3d axes = head_to_robot * camera_in_head();
   CameraPose pose;
-  pose.position = add(Vec3{0.0, 0.0, mount.pivot_height}, add(scale(mount.forward, head_x), scale(mount.up, head_z)));
-  pose.axes = {scale(-1.0, head_y), scale(-1.0, head_z), head_x};  // right, down, forward
+  pose.position = to_vec3(pivot + head_to_robot * camera_in_head_frame);
+  for (int i = 0; i < 3; ++i) pose.axes[static_cast<std::size_t>(i)] = to_vec3(axes.col(i));
   return pose;
 }
 
 Vec3 CameraPose::to_camera(const Vec3& robot) const noexcept {
-  const Vec3 d = sub(robot, position);
-  return {dot(d, axes[0]), dot(d, axes[1]), dot(d, axes[2])};
+  return to_vec3(camera_to_robot(*this).transpose() * (to_eigen(robot) - to_eigen(position)));
 }
 
-Vec3 CameraPose::to_robot_direction(const Vec3& c) const noexcept {
-  return add(add(scale(c.x, axes[0]), scale(c.y, axes[1])), scale(c.z, axes[2]));
+Vec3 CameraPose::to_robot_direction(const Vec3& camera) const noexcept {
+  return to_vec3(camera_to_robot(*this) * to_eigen(camera));
 }
 
 std::optional<Pixel> project(const CameraIntrinsics& k, const CameraPose& pose, const Vec3& robot) noexcept {
@@ -57,10 +94,11 @@ Vec3 pixel_ray(const CameraIntrinsics& k, const CameraPose& pose, const Pixel& p
 }
 
 std::optional<RobotPoint> pixel_to_ground(const CameraIntrinsics& k, const CameraPose& pose, const Pixel& px) noexcept {
-  const Vec3 ray = pixel_ray(k, pose, px);
-  if (!(ray.z < -1e-12)) return std::nullopt;  // level or upwards: never meets the ground
-  const double t = -pose.position.z / ray.z;
-  return RobotPoint{pose.position.x + t * ray.x, pose.position.y + t * ray.y};
+  const Eigen::Vector3d ray = to_eigen(pixel_ray(k, pose, px));
+  if (!(ray.z() < -1e-12)) return std::nullopt;  // level or upwards: never meets the ground
+  const Eigen::Vector3d origin = to_eigen(pose.position);
+  const Eigen::Vector3d ground = origin + (-origin.z() / ray.z()) * ray;
+  return RobotPoint{ground.x(), ground.y()};
 }
 
 }  // namespace ringlet::hal

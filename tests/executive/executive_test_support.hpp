@@ -1,7 +1,8 @@
 #pragma once
 // Test doubles for the executive tests: a recording fake of hal::Actuators, a task whose cost is
 // injected on a hal::VirtualClock (scriptable per frame or per activation), a stopwatch whose CPU
-// time runs at half the wall rate, and a rig that wires them into an Executive.
+// time runs at half the wall rate, a rig that wires them into an Executive, and the frame grid the
+// rigs run on (kStart, kPeriod, due, frames_where).
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -148,6 +149,21 @@ inline TaskSpec spec(std::string name, int every, int phase, Nanos budget, Overr
 
 /// A deliberately odd start time, so that anything computed from 0 instead of the start shows.
 inline constexpr Nanos kStart{1'000'000'007};
+
+/// The executive's default base period (ExecutiveConfig), which the rigs run at.
+inline constexpr Nanos kPeriod = 10ms;
+
+/// When frame `frame` is due on the grid that starts at kStart.
+inline Nanos due(std::uint64_t frame) { return kStart + static_cast<std::int64_t>(frame) * kPeriod; }
+
+/// The frames in [0, end) in which a task with this `every` and `phase` is active.
+inline std::vector<std::uint64_t> frames_where(std::uint64_t end, int every, int phase) {
+  std::vector<std::uint64_t> out;
+  for (std::uint64_t f = 0; f < end; ++f) {
+    if (f % static_cast<std::uint64_t>(every) == static_cast<std::uint64_t>(phase)) out.push_back(f);
+  }
+  return out;
+}
 
 /// Wires ScriptedTasks, a VirtualClock (clock and stopwatch), a FakeActuators and an EventLog
 /// into an Executive.

@@ -82,6 +82,37 @@ TEST(CameraGeometry, YawLeftLooksLeft) {
   EXPECT_NEAR(px->v, 240.0 + k.fy * 0.25, 1e-9);
 }
 
+TEST(CameraGeometry, AxesFormARotationThatToCameraInverts) {
+  const CameraMount mount{};
+  for (const HeadJoints head : {HeadJoints{0.0, 0.0}, HeadJoints{0.7, -0.3}, HeadJoints{-1.9, 0.5}}) {
+    const auto pose = CameraPose::from_head(mount, head);
+    const auto& a = pose.axes;
+    const auto dot = [](const Vec3& p, const Vec3& q) { return p.x * q.x + p.y * q.y + p.z * q.z; };
+    for (std::size_t i = 0; i < 3; ++i) {
+      for (std::size_t j = 0; j < 3; ++j) EXPECT_NEAR(dot(a[i], a[j]), i == j ? 1.0 : 0.0, 1e-14);
+    }
+    // Right-handed: right × down = forward (OpenCV's camera frame).
+    const Vec3 cross{a[0].y * a[1].z - a[0].z * a[1].y, a[0].z * a[1].x - a[0].x * a[1].z,
+                     a[0].x * a[1].y - a[0].y * a[1].x};
+    EXPECT_NEAR(cross.x, a[2].x, 1e-14);
+    EXPECT_NEAR(cross.y, a[2].y, 1e-14);
+    EXPECT_NEAR(cross.z, a[2].z, 1e-14);
+    // A point one metre along each camera axis from the camera is that unit vector in camera
+    // coordinates, and the direction maps back.
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Vec3 p{pose.position.x + a[i].x, pose.position.y + a[i].y, pose.position.z + a[i].z};
+      const Vec3 c = pose.to_camera(p);
+      EXPECT_NEAR(c.x, i == 0 ? 1.0 : 0.0, 1e-14);
+      EXPECT_NEAR(c.y, i == 1 ? 1.0 : 0.0, 1e-14);
+      EXPECT_NEAR(c.z, i == 2 ? 1.0 : 0.0, 1e-14);
+      const Vec3 back = pose.to_robot_direction(c);
+      EXPECT_NEAR(back.x, a[i].x, 1e-14);
+      EXPECT_NEAR(back.y, a[i].y, 1e-14);
+      EXPECT_NEAR(back.z, a[i].z, 1e-14);
+    }
+  }
+}
+
 TEST(CameraGeometry, NothingAtOrAboveTheHorizonMeetsTheGround) {
   const auto k = CameraIntrinsics::nao();
   const auto pose = CameraPose::from_head(kBare, {0.0, 0.0});

@@ -16,7 +16,6 @@ BallDetector::BallDetector(const BallParams& params, int width, int height)
 BallDetection BallDetector::detect(const ClassImage& classes, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
                                    int seed_stride_override) noexcept {
   BallDetection best;
-  blobs_grown_ = 0;
   if (classes.width() != width_ || classes.height() != height_) return best;
   if (++current_ == 0) {  // wrapped: clear once every 65535 frames
     std::fill(stamp_.begin(), stamp_.end(), std::uint16_t{0});
@@ -29,12 +28,13 @@ BallDetection BallDetector::detect(const ClassImage& classes, const hal::CameraI
   const auto w = static_cast<std::size_t>(width_);
   const auto is_ball = [&](int x, int y) { return classes.at(x, y) == ColourClass::kBall; };
   double best_score = 0.0;
+  int blobs_grown = 0;  // capped at max_blobs: a frame full of ball-coloured noise stays bounded
 
-  for (int y0 = top; y0 < height_ && blobs_grown_ < params_.max_blobs; y0 += stride) {
-    for (int x0 = 0; x0 < width_ && blobs_grown_ < params_.max_blobs; x0 += stride) {
+  for (int y0 = top; y0 < height_ && blobs_grown < params_.max_blobs; y0 += stride) {
+    for (int x0 = 0; x0 < width_ && blobs_grown < params_.max_blobs; x0 += stride) {
       const std::size_t seed = static_cast<std::size_t>(y0) * w + static_cast<std::size_t>(x0);
       if (stamp_[seed] == current_ || !is_ball(x0, y0)) continue;
-      ++blobs_grown_;
+      ++blobs_grown;
       // Flood fill over the sampled grid.
       std::size_t top_of_stack = 0;
       stack_[top_of_stack++] = static_cast<std::int32_t>(seed);

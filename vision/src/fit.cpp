@@ -1,5 +1,10 @@
+// The fits as small fixed-size linear algebra (Eigen's 2×2 and 3×3 types, on the stack: the
+// RANSAC rounds call these on the cycle path, where nothing may allocate).
 #include "ringlet/vision/fit.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 namespace ringlet::vision {
@@ -15,23 +20,32 @@ hal::RobotPoint mean(const IndexedPoints& pts) noexcept {
   return {sx / n, sy / n};
 }
 
+/// Point i relative to m.
+Eigen::Vector2d centred(const IndexedPoints& pts, std::size_t i, const hal::RobotPoint& m) noexcept {
+  return {pts[i].x - m.x, pts[i].y - m.y};
+}
+
 }  // namespace
 
 std::optional<Line2> fit_line_tls(const IndexedPoints& pts) noexcept {
   if (pts.size() < 2) return std::nullopt;
   const hal::RobotPoint m = mean(pts);
-  double sxx = 0.0, sxy = 0.0, syy = 0.0;
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const double x = pts[i].x - m.x;
-    const double y = pts[i].y - m.y;
-    sxx += x * x;
-    sxy += x * y;
-    syy += y * y;
+    const Eigen::Vector2d d = centred(pts, i, m);
+    scatter += d * d.transpose();
   }
-  if (sxx + syy < 1e-18) return std::nullopt;
-  // Principal axis of the 2×2 scatter matrix: angle θ with tan 2θ = 2 sxy / (sxx − syy).
-  const double theta = 0.5 * std::atan2(2.0 * sxy, sxx - syy);
-  return Line2{m, std::cos(theta), std::sin(theta)};
+  if (scatter.trace() < 1e-18) return std::nullopt;
+  // The line runs along the scatter matrix's principal axis: the eigenvector of its larger
+  // eigenvalue (Eigen sorts them ascending). The iterative solver, not computeDirect's closed
+  // form: it stays accurate when the two eigenvalues are close, and its iterations are bounded.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(scatter);
+  if (eigen.info() != Eigen::Success) return std::nullopt;
+  Eigen::Vector2d axis = eigen.eigenvectors().col(1);
+  // An eigenvector's sign is arbitrary; fix it (towards +x, or +y when vertical) so that the
+  // same points always give the same direction, and so the same order of points along it.
+  if (axis.x() < 0.0 || (axis.x() == 0.0 && axis.y() < 0.0)) axis = -axis;
+  return Line2{m, axis.x(), axis.y()};
 }
 
 double line_rms(const Line2& line, const IndexedPoints& pts) noexcept {
@@ -47,40 +61,25 @@ double line_rms(const Line2& line, const IndexedPoints& pts) noexcept {
 std::optional<Circle2> fit_circle(const IndexedPoints& pts) noexcept {
   if (pts.size() < 3) return std::nullopt;
   const hal::RobotPoint m = mean(pts);
-  // Normal equations of  minimise Σ (z + D x + E y + F)², z = x² + y², in centred coordinates.
-  double sxx = 0, sxy = 0, syy = 0, sx = 0, sy = 0, sxz = 0, syz = 0, sz = 0;
+  // Normal equations of  minimise Σ (z + D x + E y + F)², z = x² + y², in centred coordinates:
+  // Σ r rᵀ [D E F]ᵀ = −Σ r z  with r = (x, y, 1).
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const double x = pts[i].x - m.x;
-    const double y = pts[i].y - m.y;
-    const double z = x * x + y * y;
-    sxx += x * x;
-    sxy += x * y;
-    syy += y * y;
-    sx += x;
-    sy += y;
-    sxz += x * z;
-    syz += y * z;
-    sz += z;
+    const Eigen::Vector2d d = centred(pts, i, m);
+    const Eigen::Vector3d r{d.x(), d.y(), 1.0};
+    normal += r * r.transpose();
+    rhs -= d.squaredNorm() * r;
   }
   const auto n = static_cast<double>(pts.size());
-  // [sxx sxy sx; sxy syy sy; sx sy n] [D E F]ᵀ = −[sxz syz sz]ᵀ, solved by Cramer's rule.
-  const double a[3][3] = {{sxx, sxy, sx}, {sxy, syy, sy}, {sx, sy, n}};
-  const double b[3] = {-sxz, -syz, -sz};
-  const auto det3 = [](const double mtx[3][3]) {
-    return mtx[0][0] * (mtx[1][1] * mtx[2][2] - mtx[1][2] * mtx[2][1]) -
-           mtx[0][1] * (mtx[1][0] * mtx[2][2] - mtx[1][2] * mtx[2][0]) +
-           mtx[0][2] * (mtx[1][0] * mtx[2][1] - mtx[1][1] * mtx[2][0]);
-  };
-  const double det = det3(a);
-  const double scale = (sxx + syy) * (sxx + syy) * n;
-  if (!(std::abs(det) > 1e-12 * scale) || scale <= 0.0) return std::nullopt;
-  double sol[3];
-  for (int c = 0; c < 3; ++c) {
-    double m3[3][3];
-    for (int r = 0; r < 3; ++r)
-      for (int k = 0; k < 3; ++k) m3[r][k] = k == c ? b[r] : a[r][k];
-    sol[c] = det3(m3) / det;
-  }
+  const double spread = normal(0, 0) + normal(1, 1);
+  const double scale = spread * spread * n;
+  if (!(std::abs(normal.determinant()) > 1e-12 * scale) || scale <= 0.0) return std::nullopt;
+  // Pivoted LDLT rather than Cramer's rule: backward stable, and the matrix is symmetric
+  // positive definite once the points are not collinear.
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(normal);
+  if (ldlt.info() != Eigen::Success) return std::nullopt;
+  const Eigen::Vector3d sol = ldlt.solve(rhs);
   const double cx = -sol[0] / 2.0;
   const double cy = -sol[1] / 2.0;
   const double r2 = cx * cx + cy * cy - sol[2];

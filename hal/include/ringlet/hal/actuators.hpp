@@ -8,14 +8,16 @@ struct DriveCommand {
   double velocity = 0.0;   // v, m/s
 };
 
-struct HeadCommand {
+/// Where the head should point (radians, as hal::HeadJoints). Not wb::HeadCommand: that is the
+/// whiteboard message the behaviours post; the firmware's actuate task copies it into this.
+struct HeadTarget {
   double yaw = 0.0;
   double pitch = 0.0;
 };
 
 struct ActuatorCommand {
   DriveCommand drive{};
-  HeadCommand head{};
+  HeadTarget head{};
 };
 
 

@@ -59,7 +59,9 @@ struct NaoHeadRange {
   static constexpr double kMaxPitchDeg = 29.5;   // looking down
 };
 
-/// The camera for one head posture: its position and axes, in the robot frame.
+/// The camera for one head posture: its position and axes, in the robot frame. The axes are the
+/// columns of the camera→robot rotation (camera_geometry.cpp composes and applies it with Eigen;
+/// this header stays plain so that the layers above need no Eigen).
 struct CameraPose {
   Vec3 position{};
   std::array<Vec3, 3> axes{};  // camera x (right), y (down), z (optical axis), as robot vectors

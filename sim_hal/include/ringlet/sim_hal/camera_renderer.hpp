@@ -52,9 +52,6 @@ class CameraRenderer {
   [[nodiscard]] const CameraSpec& spec() const noexcept { return spec_; }
   [[nodiscard]] const World& world() const noexcept { return world_; }
 
-  /// Changes the carpet's lighting for the next renders (the dataset tool varies it per frame).
-  void set_lighting(const Lighting& lighting) noexcept { world_.lighting = lighting; }
-
   /// Capacity for visible line runs: every line may be cut into pieces by each obstacle and the
   /// ball. More runs than this are dropped and FrameTruth::lines_truncated is set.
   [[nodiscard]] std::size_t line_run_capacity() const noexcept { return truth_.lines.capacity(); }

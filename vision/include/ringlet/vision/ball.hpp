@@ -41,8 +41,6 @@ class BallDetector {
   [[nodiscard]] BallDetection detect(const ClassImage& classes, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
                                      int seed_stride_override = -1) noexcept;
 
-  [[nodiscard]] int blobs_grown() const noexcept { return blobs_grown_; }
-
  private:
   BallParams params_;
   int width_;
@@ -50,7 +48,6 @@ class BallDetector {
   std::vector<std::uint16_t> stamp_;  // per pixel: the frame stamp that visited it (no clearing)
   std::uint16_t current_ = 0;
   std::vector<std::int32_t> stack_;
-  int blobs_grown_ = 0;
 };
 
 }  // namespace ringlet::vision
