@@ -222,6 +222,13 @@ TEST(ConfigPositions, StartPoseCollisionNamesTheWorldLineAndTheRadius) {
                    (kData / "start_collides.toml").string() + ":5:16)");
 }
 
+TEST(ConfigPositions, GoalOutsideTheWorldNamesTheGoalAndTheWorld) {
+  const auto cfg = parse_as_shipped(with_line(shipped_config_text(), "goals", "goals = [[2, 6], [30, 6]]"));
+  const std::string m = error_of<ConfigError>([&] { FirmwareStack stack(cfg); });
+  EXPECT_TRUE(std::regex_search(m, std::regex(R"(^.*courtyard\.toml:\d+:\d+: mission\.goals\[1\]: \(30, 6\) lies outside the world .*courtyard\.world \(bounds 0 0 20 14\)$)")))
+      << m;
+}
+
 TEST(ConfigPositions, CanBackendNamesTheKey) {
   const std::string m = error_of<ConfigError>([] { (void)load_config(kData / "can_backend.toml"); });
   EXPECT_EQ(m.rfind((kData / "can_backend.toml").string() + ":4:11: robot.backend: must be one of \"sim\"", 0), 0U)

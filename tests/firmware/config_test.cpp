@@ -117,7 +117,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 1.9 },",
                 "executive.tasks[0].budget_us: must be a whole number of microseconds, got 1.9"},
         BadCase{"timeout_s", "timeout_s = 1e6", "mission.timeout_s: must be between 0.01 and 86400, got 1e+06"},
-        BadCase{"timeout_s", "timeout_s = nan", "mission.timeout_s: must be between 0.01 and 86400, got nan"}));
+        BadCase{"timeout_s", "timeout_s = nan", "mission.timeout_s: must be between 0.01 and 86400, got nan"},
+        BadCase{"goals", "# no goals", "mission.goals: the mission needs its goals"},
+        BadCase{"goals", "goals = []", "mission.goals: must be a non-empty array of [x, y] pairs"},
+        BadCase{"goals", "goals = [[1, 2], [3]]", "mission.goals[1]: must be a pair of finite numbers [x, y]"},
+        BadCase{"goals", "goals = [[1, \"north\"]]", "mission.goals[0]: must be a pair of finite numbers [x, y]"},
+        BadCase{"goals", "goals = [[1, nan]]", "mission.goals[0]: must be a pair of finite numbers [x, y]"}));
 
 TEST(FirmwareConfig, SimBackendNeedsAWorld) {
   const std::string message = error_of(with_line(shipped_config_text(), "world", "# no world"));

@@ -87,6 +87,18 @@ std::unique_ptr<hal::Robot> make_sim(const FirmwareConfig& config, const SimSett
     // The rendered camera delivers a frame whenever vision runs: one setting, the vision row's.
     sim.camera = {true, config.camera.intrinsics, config.camera.mount, config.camera.format, vision->every};
   }
+  // A goal outside the world can never be reached: refused before the run, naming both places.
+  for (std::size_t i = 0; i < config.mission.goals.size(); ++i) {
+    const auto& g = config.mission.goals[i];
+    if (g.x < world.min.x || g.x > world.max.x || g.y < world.min.y || g.y > world.max.y) {
+      const std::string key = "mission.goals[" + std::to_string(i) + "]";
+      std::ostringstream s;
+      s << config.positions.at(key) << ": " << key << ": (" << g.x << ", " << g.y << ") lies outside the world "
+        << settings.world.string() << " (bounds " << world.min.x << ' ' << world.min.y << ' ' << world.max.x << ' '
+        << world.max.y << ')';
+      throw ConfigError(s.str());
+    }
+  }
   // Checked here, not only in SimRobot, so that the message names both places: the world's
   // start line and the configuration's robot radius.
   if (sim_hal::disc_collides(world, sim_hal::Vec2{world.start.x, world.start.y}, sim.robot_radius)) {
