@@ -103,7 +103,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "rate 30 Hz does not divide the base rate 100 Hz"},
         BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 20000 },",
                 "is larger than the period"},
-        BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 9900 },", "is overloaded: budgets of sense, fsm, actuate, telemetry, whiteboard"},
+        BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 9900 },", "is overloaded: budgets of sense, goals, ball_sensor, fsm, actuate, telemetry, whiteboard"},
         BadCase{"  { name = \"sense\"", "  { name = \"sense\" },", "executive.tasks[0].budget_us: every task needs a budget"},
         BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 200, policy = \"panic\" },",
                 "policy: must be one of \"warn\", \"skip\", \"degrade\", \"failsafe\""},

@@ -103,6 +103,7 @@ TEST(FirmwareStack, SafetyMachineStopsTheRobotBeforeAWall) {
   const auto world = test::kShippedConfig.parent_path().parent_path().parent_path() / "tests/firmware/data/blocked.world";
   auto text = with_line(shipped(), "world", "world = \"" + world.string() + "\"");
   text = with_line(text, "timeout_s", "timeout_s = 20");
+  text = with_line(text, "goals", "goals = [[2, 10]]");
   const auto r = run(text);
   EXPECT_FALSE(r.summary.complete);
   EXPECT_EQ(r.summary.collisions, 0U) << "the robot must stop before the wall";
@@ -159,13 +160,14 @@ TEST(FirmwareVision, MissingColourTableIsAConfigError) {
   }
 }
 
-TEST(FirmwareVision, CameraWithoutAVisionTaskInTheTableIsRefused) {
+TEST(FirmwareVision, WithoutAVisionTaskNothingProvidesTheBall) {
   const auto cfg = parse_as_shipped(with_line(spl(1.0), "  { name = \"vision\"", ""));
   try {
     FirmwareStack stack(cfg);
     FAIL() << "no error";
   } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("task 'vision' is missing from the table"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("machine 'BallTracker' requires 'BallBelief', but no task"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -201,23 +203,38 @@ TEST(FirmwareStack, TimeoutIsAnIncompleteMission) {
   EXPECT_EQ(exit_code(r.summary), 3);
 }
 
-TEST(FirmwareStack, TableMustNameExactlyTheFirmwaresTasks) {
+TEST(FirmwareStack, TwoTasksMayNotProvideTheSameType) {
+  // The courtyard with vision added beside the simulator's own ball sensor: both post BallBelief.
   const auto text = with_line(shipped_config_text(), "  { name = \"telemetry\"",
-                              "  { name = \"vision\", every = 3, phase = 1, budget_us = 100 },");
+                              "  { name = \"vision\", every = 3, phase = 1, budget_us = 3000 },\n"
+                              "  { name = \"telemetry\", every = 1, phase = 0, budget_us = 100, policy = \"skip\" },");
   const auto cfg = parse_as_shipped(text);
   try {
     FirmwareStack stack(cfg);
     FAIL() << "no error";
   } catch (const ConfigError& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find("task 'vision' is not a task this firmware provides"), std::string::npos) << m;
-    EXPECT_NE(m.find("task 'telemetry' is missing from the table"), std::string::npos) << m;
+    EXPECT_NE(m.find("tasks 'ball_sensor' and 'vision' both provide 'BallBelief': run one of them"), std::string::npos)
+        << m;
+  }
+}
+
+TEST(FirmwareStack, AMachineWhoseInputNobodyProvidesStopsStartUp) {
+  // Without the goals task, the Mission machine's MissionGoals has no provider.
+  const auto cfg = parse_as_shipped(with_line(shipped_config_text(), "  { name = \"goals\"", ""));
+  try {
+    FirmwareStack stack(cfg);
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("machine 'Mission' requires 'MissionGoals', but no task in the table or machine provides it"),
+              std::string::npos)
+        << m;
   }
 }
 
 TEST(FirmwareStack, CanBackendIsRefusedClearly) {
-  const auto cfg = parse_as_shipped(with_line(shipped_config_text(), "backend", "backend = \"can\""));
-  EXPECT_THROW({ FirmwareStack stack(cfg); }, ConfigError);
+  EXPECT_THROW((void)parse_as_shipped(with_line(shipped_config_text(), "backend", "backend = \"can\"")), ConfigError);
 }
 
 }  // namespace

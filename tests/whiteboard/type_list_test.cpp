@@ -13,7 +13,8 @@ TEST(WbTypeList, NamesAndIdsAreTheSchemaOnes) {
   const std::vector<std::string> names{"BallBelief", "HeadCommand", "MotionCommand",
                                        "Pose",       "LaserSummary", "FsmStatus",
                                        "FsmControl", "ExecutiveTiming", "Print",
-                                       "FieldLines"};
+                                       "FieldLines",  "HeadPosture",   "BodyState",    "MissionGoals",
+                                       "MissionStatus"};
   ASSERT_EQ(kTypeCount, names.size());
   for (std::size_t i = 0; i < kTypeCount; ++i) {
     EXPECT_EQ(kTypes[i].name, names[i]);
