@@ -10,8 +10,9 @@
 #   - a target's include directories (INCLUDE_DIRECTORIES, INTERFACE_INCLUDE_DIRECTORIES) reach
 #     into another layer's folder, in the source or the build tree: headers of another layer come
 #     only through linking that layer's target, so a wrong #include fails to compile;
-#   - a target defined outside every layer folder (cmake/: ringlet_warnings, ringlet_opencv) links
-#     a layer's target: those are shared settings and third-party wrappers, usable by all;
+#   - a target defined outside every layer folder (at the top level: ringlet_warnings and
+#     ringlet_opencv from cmake/) links a layer's target: those are shared settings and third-party
+#     wrappers, which every layer may link;
 #   - the table itself is not closed: a layer that may use M may use everything M may use (M's
 #     PUBLIC links hand M's dependencies on), and no layer may use itself through others (a cycle).
 # Relative includes ("../../other/include/x.hpp") bypass include directories; the CTest
