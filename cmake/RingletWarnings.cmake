@@ -9,7 +9,8 @@ target_compile_options(ringlet_warnings INTERFACE
   -ffp-contract=off
   $<$<BOOL:${RINGLET_WERROR}>:-Werror>)
 
-# ringlet_add_library(name SOURCES... DEPS...) keeps every library's shape the same.
+# ringlet_library(name SOURCES... PUBLIC... PRIVATE...) keeps every library's shape the same: it
+# exposes only its own folder's include/ (other layers' headers come through PUBLIC links).
 function(ringlet_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC;PRIVATE" ${ARGN})
   add_library(${name} ${ARG_SOURCES})
