@@ -14,8 +14,9 @@ README.md marks its figures with HTML comments (invisible when rendered):
                                            deterministic lines with the run (measured columns,
                                            host time and progress lines are masked).
 
-KEY is SOURCE.FIGURE. SOURCE is the stem of a shipped configuration (firmware/config/SOURCE.toml)
-or vision_eval_SEED (the vision evaluation, run by `tools/ringlet results` only). A number is
+KEY is SOURCE.FIGURE. SOURCE is the stem of a shipped configuration (firmware/config/SOURCE.toml),
+realtime_STEM (a few seconds of it on the real clock) or vision_eval_SEED (the vision evaluation);
+the last two are run by `tools/ringlet results` only. A number is
 compared at the precision it is written with: "24.2" matches 24.16, "89" matches 89.3.
 
 Used by the CTest ReadmeFigures (`check`, running the firmware in lockstep for every configuration
@@ -66,9 +67,15 @@ def firmware_figures(report):
         "degraded_runs": sum(t["degraded_runs"] for t in tasks),
         "fsm_status_seen": mission["fsm_status_seen"],
     }
+    frames = timing["frames"]
     meas = {
         "host_s": mission["host_seconds"],
         "measured_overruns": sum(t["measured_overruns"] for t in tasks),
+        # On the schedule clock: zero in lockstep by construction, measured on the real clock.
+        "frame_overruns": frames["frame_overruns"],
+        "slips": frames["slips"],
+        "wake_p99_us": frames["wake_latency"]["p99_us"],
+        "busy_p99_us": frames["busy"]["p99_us"],
     }
     vision = mission.get("vision")
     if vision:
@@ -352,17 +359,19 @@ def fill(text, markers, blocks, figures, excerpts):
     return text, problems
 
 
-def sources_named(markers, blocks):
-    return sorted({m.source for m in markers} | {b.source for b in blocks})
+def sources_to_check(markers, blocks):
+    """The sources whose deterministic figures the README states (measured ones are not checked)."""
+    return sorted({m.source for m in markers if m.kind == "fig"} | {b.source for b in blocks})
 
 
 # ---------------------------------------------------------------------------------------------
 # Running the firmware
 # ---------------------------------------------------------------------------------------------
 
-def run_firmware(ringlet, config, report, svg=None, log=None):
-    """One lockstep run: (exit code, report JSON or None, console excerpt)."""
-    cmd = [str(ringlet), "--config", str(config), "--lockstep", "--report", str(report)]
+def run_firmware(ringlet, config, report, svg=None, log=None, clock=("--lockstep",)):
+    """One run, in lockstep unless CLOCK says otherwise: (exit code, report JSON or None, console
+    excerpt, the finished process)."""
+    cmd = [str(ringlet), "--config", str(config), *clock, "--report", str(report)]
     if svg:
         cmd += ["--svg", str(svg)]
     if log:
@@ -386,15 +395,15 @@ def cmd_check(args):
     text = read_readme(args.readme)
     name = os.path.basename(args.readme)
     markers, blocks = parse(text, name)
-    sources = sources_named(markers, blocks)
+    sources = sources_to_check(markers, blocks)
     if not sources:
         raise BadInput(f"{args.readme}: no figure markers (<!--fig:KEY-->VALUE<!--/fig-->) to check")
-    os.makedirs(args.work, exist_ok=True)
-    figures, excerpts, problems = {}, {}, []
+    # Every name is checked before anything runs: a typo costs a second, not a mission.
+    configs = {}
     for source in sources:
         if is_eval_source(source):
             n = sum(1 for m in markers if m.source == source and m.kind == "fig")
-            print(f"-- {source}: {n} figures not checked here (the vision evaluation takes minutes; "
+            print(f"-- {source}: {n} figures not checked here (the vision evaluation; "
                   f"`tools/ringlet results` checks them)")
             continue
         config = Path(args.config_dir) / f"{source}.toml"
@@ -402,6 +411,10 @@ def cmd_check(args):
             lines = sorted({m.line for m in markers if m.source == source} |
                            {b.first_line for b in blocks if b.source == source})
             raise BadInput(f"{name}:{lines[0]}: '{source}' is not a shipped configuration ({config} does not exist)")
+        configs[source] = config
+    os.makedirs(args.work, exist_ok=True)
+    figures, excerpts, problems = {}, {}, []
+    for source, config in configs.items():
         print(f"-- {source}: running {config.name} in lockstep", flush=True)
         rc, report, excerpt, p = run_firmware(args.ringlet, config, Path(args.work) / f"{source}.json",
                                               log=lambda c: print("   " + c, flush=True))
