@@ -17,7 +17,8 @@ README.md marks its figures with HTML comments (invisible when rendered):
 KEY is SOURCE.FIGURE. SOURCE is the stem of a shipped configuration (firmware/config/SOURCE.toml),
 realtime_STEM (a few seconds of it on the real clock) or vision_eval_SEED (the vision evaluation);
 the last two are run by `tools/ringlet results` only. A number is
-compared at the precision it is written with: "24.2" matches 24.16, "89" matches 89.3.
+compared at the precision it is written with: "24.2" matches 24.16, "89" matches 89.3. A value
+may be a code span (<!--fig:KEY-->`aa41...`<!--/fig-->; inside the backticks a comment would show).
 
 Used by the CTest ReadmeFigures (`check`, running the firmware in lockstep for every configuration
 the README names) and imported by tools/results.py.
@@ -206,7 +207,13 @@ def parse(text, name):
                 if "." not in key:
                     problems.append(f"{name}:{n}: marker key '{key}' must be SOURCE.FIGURE")
                     continue
-                inline.append(Marker(m.group(1), key, m.group(3), n, offset + m.start(3), offset + m.end(3)))
+                start, end = m.start(3), m.end(3)
+                value = m.group(3)
+                # A value in a code span (`aa41...`): the marker stays outside the backticks, where
+                # Markdown hides it; the figure is what is inside them.
+                if len(value) >= 2 and value[0] == "`" and value[-1] == "`":
+                    value, start, end = value[1:-1], start + 1, end - 1
+                inline.append(Marker(m.group(1), key, value, n, offset + start, offset + end))
                 covered.append((m.start(), m.end()))
             rest = "".join(c for j, c in enumerate(line) if not any(a <= j < b for a, b in covered))
             if ANY_MARKER.search(rest):
