@@ -86,6 +86,8 @@ int main(int argc, char** argv) {
   std::optional<std::string> seed_text;
   std::optional<std::filesystem::path> report_path;
   std::optional<std::filesystem::path> svg_path;
+  std::optional<std::filesystem::path> record_path;
+  std::optional<std::filesystem::path> wb_log_path;
   bool check_only = false;
   app.add_option("-c,--config", config_path, "configuration file (TOML)")->capture_default_str()->type_name("FILE");
   app.add_option("-d,--duration", duration_text,
@@ -97,6 +99,11 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed_text, "override the backend's seed, e.g. sim.seed (0 to 2^64-1)")->type_name("N");
   app.add_option("-r,--report", report_path, "write the mission summary and timing report as JSON")->type_name("FILE");
   app.add_option("--svg", svg_path, "write a picture of the world and the trajectory (backends with ground truth: sim)")->type_name("FILE");
+  app.add_option("--record", record_path,
+                 "record the robot's inputs (sensors, ball sensor, camera) to a HAL log that the replay backend plays back")
+      ->type_name("FILE");
+  app.add_option("--wb-log", wb_log_path, "log every whiteboard message to FILE (compare a replay with its recording)")
+      ->type_name("FILE");
   app.add_flag("--check", check_only, "validate the configuration and world, print the task table, and exit");
   try {
     app.parse(argc, argv);
@@ -120,6 +127,8 @@ int main(int argc, char** argv) {
     if (realtime) cfg.clock = firmware::ClockMode::kRealtime;
     if (lockstep) cfg.clock = firmware::ClockMode::kLockstep;
     if (seed) cfg.seed_override = *seed;
+    if (record_path) cfg.record_log = *record_path;
+    if (wb_log_path) cfg.whiteboard_log = *wb_log_path;
     if (duration > 0.0) {
       // The recording buffers are sized for the whole run at start-up: refuse what would not fit.
       if (const std::string why = firmware::run_length_problem(cfg, duration); !why.empty()) {
@@ -150,6 +159,11 @@ int main(int argc, char** argv) {
       return o;
     }();
     g_executive_stop.store(nullptr);
+    bool log_failed = false;
+    for (const std::string& problem : stack.finish_logs()) {
+      std::cerr << "ringlet: " << problem << '\n';
+      log_failed = true;
+    }
 
     const bool forced = stack.executive().failsafe_triggered() || outcome.watchdog_fired;
     const auto summary = firmware::summarize(stack, outcome, forced);
@@ -186,7 +200,7 @@ int main(int argc, char** argv) {
       }
     }
     const int code = firmware::exit_code(summary);
-    return output_failed && !summary.interrupted ? 1 : code;
+    return (output_failed || log_failed) && !summary.interrupted ? 1 : code;
   } catch (const firmware::UsageError& e) {
     std::cerr << "ringlet: " << e.what() << '\n';
     return 2;

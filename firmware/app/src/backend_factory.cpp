@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "config_section.hpp"
+#include "ringlet/hal/replay_robot.hpp"
 #include "ringlet/sim_hal/collision.hpp"
 #include "ringlet/sim_hal/sim_robot.hpp"
 #include "ringlet/sim_hal/world.hpp"
@@ -115,10 +116,50 @@ std::unique_ptr<hal::Robot> make_sim(const FirmwareConfig& config, const SimSett
   }
 }
 
+// ---- replay: a recorded run's HAL inputs, fed back through the same firmware -------------------
+
+struct ReplaySettings final : BackendSettings {
+  std::filesystem::path log;  // replay.log, resolved relative to the configuration file
+
+  [[nodiscard]] std::string source_name() const override { return log.filename().string(); }
+  [[nodiscard]] std::optional<std::uint64_t> seed() const override { return std::nullopt; }
+};
+
+std::shared_ptr<const BackendSettings> read_replay(Section& section, const std::filesystem::path& base_dir,
+                                                   const FirmwareConfig& so_far) {
+  auto out = std::make_shared<ReplaySettings>();
+  out->log = section.path("log", base_dir);
+  if (out->log.empty() && so_far.backend == "replay") {
+    section.fail_missing("log", "the replay backend needs a log recorded with ringlet --record (replay.log = \"...\")");
+  }
+  return out;
+}
+
+std::unique_ptr<hal::Robot> make_replay(const FirmwareConfig& config, const ReplaySettings& settings) {
+  if (config.clock != ClockMode::kLockstep) {
+    // The replay reads its log on the cycle's thread: only virtual time makes that harmless.
+    throw ConfigError(config.positions.at("executive.clock") +
+                      ": executive.clock: a replay runs in lockstep (it reads the log on the cycle's thread)");
+  }
+  std::unique_ptr<hal::ReplayRobot> robot;
+  try {
+    robot = std::make_unique<hal::ReplayRobot>(settings.log);
+  } catch (const hal::LogError& e) {
+    throw ConfigError(config.positions.at("replay.log") + ": replay.log: " + e.what());
+  }
+  if (robot->period() != config.executive.period) {
+    throw ConfigError(config.positions.at("executive.period_us") + ": executive.period_us: the log " +
+                      settings.log.string() + " was recorded with a period of " +
+                      std::to_string(robot->period().count() / 1000) + " us, the configuration has " +
+                      std::to_string(config.executive.period.count() / 1000) + " us");
+  }
+  return robot;
+}
+
 }  // namespace
 
 const std::vector<std::string>& backend_names() {
-  static const std::vector<std::string> names{"sim"};
+  static const std::vector<std::string> names{"sim", "replay"};
   return names;
 }
 
@@ -126,11 +167,15 @@ std::shared_ptr<const BackendSettings> read_backend_settings(const std::string& 
                                                              const std::filesystem::path& base_dir,
                                                              const FirmwareConfig& so_far) {
   if (name == "sim") return read_sim(section, base_dir, so_far);
+  if (name == "replay") return read_replay(section, base_dir, so_far);
   throw ConfigError("robot.backend: no reader for backend \"" + name + "\"");
 }
 
 std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config) {
   if (config.backend == "sim") return make_sim(config, static_cast<const SimSettings&>(*config.backend_settings));
+  if (config.backend == "replay") {
+    return make_replay(config, static_cast<const ReplaySettings&>(*config.backend_settings));
+  }
   throw ConfigError(config.positions.at("robot.backend") + ": robot.backend: \"" + config.backend +
                     "\" is not a backend of this build");
 }

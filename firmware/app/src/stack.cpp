@@ -35,13 +35,48 @@ std::vector<const RegisteredTask*> tasks_of_table(const FirmwareConfig& config, 
   return out;
 }
 
+// --record: the robot's HAL inputs to a log. In lockstep nothing is lost (the cycle waits for the
+// writer, which only costs host time); on the real clock a full queue drops and counts.
+std::unique_ptr<hal::RecordingRobot> make_recorder(const FirmwareConfig& config, hal::Robot& robot) {
+  if (config.record_log.empty()) return nullptr;
+  if (config.task("vision") != nullptr && config.camera.backend != "robot") {
+    throw ConfigError("--record: records the robot's own camera only; camera.backend is \"" + config.camera.backend +
+                      "\" (" + config.positions.at("camera.backend") + ")");
+  }
+  hal::RecordingOptions options;
+  options.mode = config.clock == ClockMode::kLockstep ? hal::RecordMode::kLossless : hal::RecordMode::kDropOnFull;
+  options.period = config.executive.period;
+  options.note = "ringlet --config " + config.source.string();
+  if (robot.camera() != nullptr) {
+    options.max_camera_frame_bytes = hal::camera_frame_bytes(config.camera.format, config.camera.intrinsics.width,
+                                                             config.camera.intrinsics.height);
+  }
+  try {
+    return std::make_unique<hal::RecordingRobot>(robot, config.record_log, options);
+  } catch (const hal::LogError& e) {
+    throw ConfigError(std::string("--record: ") + e.what());
+  }
+}
+
+std::unique_ptr<wb::MessageLogger> make_message_log(const FirmwareConfig& config, wb::Whiteboard& board) {
+  if (config.whiteboard_log.empty()) return nullptr;
+  const auto mode = config.clock == ClockMode::kLockstep ? wb::MessageLogMode::kLossless : wb::MessageLogMode::kDropOnFull;
+  try {
+    return std::make_unique<wb::MessageLogger>(board, config.whiteboard_log, wb::MessageLogOptions{mode});
+  } catch (const std::runtime_error& e) {
+    throw ConfigError(std::string("--wb-log: ") + e.what());
+  }
+}
+
 }  // namespace
 
 FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& registry)
     : config_(config),
       robot_(make_robot(config_)),
+      recorder_(make_recorder(config_, *robot_)),
       board_(kWhiteboardGenerations),
       fsm_status_log_(std::make_unique<FsmStatusLog>()),
+      message_log_(make_message_log(config_, board_)),
       telemetry_(static_cast<std::size_t>(trajectory_samples(config_, config_.mission.timeout_s)), 1024),
       ball_tracker_(board_),
       mission_machine_(board_, config_.follower),
@@ -64,8 +99,9 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& r
     ++fsm_status_seen_;
     (void)fsm_status_log_->push(status);
   });
-  hal::Camera* camera = owned_camera_ ? owned_camera_.get() : robot_->camera();
-  TaskServices services{config_, *robot_, camera, board_, schedule_, telemetry_, executive_view_};
+  hal::Robot& robot = this->robot();
+  hal::Camera* camera = owned_camera_ ? owned_camera_.get() : robot.camera();
+  TaskServices services{config_, robot, camera, board_, schedule_, telemetry_, executive_view_, message_log_.get()};
   std::vector<executive::TaskBinding> bindings;
   for (std::size_t i = 0; i < table.size(); ++i) {
     tasks_.push_back(table[i]->make(services));
@@ -77,7 +113,7 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& r
   executive::ExecutiveConfig exec_config = config_.executive;
   exec_config.judge_on_model = config_.clock == ClockMode::kLockstep;
   executive_ = std::make_unique<executive::Executive>(exec_config, std::move(bindings), clock(), stopwatch_,
-                                                      robot_->actuators(), &events_);
+                                                      robot.actuators(), &events_);
   executive_view_ = executive_.get();
   if (const hal::GroundTruth* truth = robot_->ground_truth()) {
     truth_score_.emplace(*truth, board_);
@@ -86,6 +122,25 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& r
 }
 
 FirmwareStack::~FirmwareStack() = default;
+
+std::vector<std::string> FirmwareStack::finish_logs() noexcept {
+  std::vector<std::string> problems;
+  if (recorder_) {
+    const hal::RecordingStatus s = recorder_->stop();
+    if (!s.ok()) problems.push_back(s.error);
+    if (s.dropped > 0) {
+      problems.push_back("--record: " + std::to_string(s.dropped) + " records dropped (the writer fell behind)");
+    }
+  }
+  if (message_log_) {
+    const wb::MessageLogStatus s = message_log_->stop();
+    if (!s.ok()) problems.push_back(s.error);
+    if (s.dropped > 0) {
+      problems.push_back("--wb-log: " + std::to_string(s.dropped) + " messages dropped (the writer fell behind)");
+    }
+  }
+  return problems;
+}
 
 hal::Clock& FirmwareStack::clock() noexcept {
   if (config_.clock == ClockMode::kRealtime) return monotonic_clock_;

@@ -17,6 +17,7 @@ struct ReplayRobot::Impl {
    public:
     explicit ReplaySensors(Impl& impl) : impl_(impl) {}
     bool read(SensorFrame& out) noexcept override { return impl_.read(out); }
+    [[nodiscard]] bool exhausted() const noexcept override { return impl_.end; }
 
    private:
     Impl& impl_;

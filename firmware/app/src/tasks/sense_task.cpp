@@ -29,8 +29,9 @@ std::unique_ptr<executive::Task> SenseTask::make(TaskServices& services) {
   return std::make_unique<SenseTask>(services.robot.sensors(), services.board);
 }
 
-void SenseTask::run(const executive::TaskContext& /*ctx*/) noexcept {
+void SenseTask::run(const executive::TaskContext& ctx) noexcept {
   const bool ok = sensors_.read(frame_);
+  if (!ok && sensors_.exhausted()) ctx.request_stop();  // a replayed log has ended
   board_.post(wb::Pose{frame_.pose.pose.x, frame_.pose.pose.y, frame_.pose.pose.theta, ok && frame_.pose.valid});
   board_.post(summarize(frame_.laser));
   board_.post(wb::HeadPosture{frame_.stamp.count(), frame_.head.yaw, frame_.head.pitch});

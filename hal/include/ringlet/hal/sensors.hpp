@@ -74,6 +74,9 @@ class Sensors {
   /// a lockstep simulator advances its world by exactly one period here. Returns false when the
   /// hardware could not be read (the frame's readings are then stale and marked invalid).
   virtual bool read(SensorFrame& out) noexcept = 0;
+  /// True once the source has no more readings and never will (a replayed log's end): the
+  /// firmware then ends the run instead of driving on stale data.
+  [[nodiscard]] virtual bool exhausted() const noexcept { return false; }
 };
 
 }  // namespace ringlet::hal

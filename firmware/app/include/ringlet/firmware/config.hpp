@@ -101,6 +101,8 @@ struct FirmwareConfig {
   std::string backend = "sim";      // robot.backend
   std::shared_ptr<const BackendSettings> backend_settings;  // its section, read by the factory
   std::optional<std::uint64_t> seed_override;  // --seed: replaces the backend's seed
+  std::filesystem::path record_log;      // --record: the robot's HAL inputs go to this log
+  std::filesystem::path whiteboard_log;  // --wb-log: every whiteboard message goes to this log
   MissionSettings mission{};
   behaviour::MoveToWaypointParams follower{};
   ClockMode clock = ClockMode::kLockstep;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "ringlet/behaviour/llfsm/schedule.hpp"
@@ -22,7 +23,9 @@
 #include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/firmware/truth_score.hpp"
 #include "ringlet/hal/monotonic_clock.hpp"
+#include "ringlet/hal/recording_robot.hpp"
 #include "ringlet/hal/virtual_clock.hpp"
+#include "ringlet/whiteboard/message_log.hpp"
 #include "ringlet/whiteboard/whiteboard.hpp"
 
 namespace ringlet::firmware {
@@ -39,7 +42,8 @@ class FirmwareStack {
   [[nodiscard]] const FirmwareConfig& config() const noexcept { return config_; }
   [[nodiscard]] executive::Executive& executive() noexcept { return *executive_; }
   [[nodiscard]] const executive::Executive& executive() const noexcept { return *executive_; }
-  [[nodiscard]] hal::Robot& robot() noexcept { return *robot_; }
+  /// The robot the tasks drive: the backend's, or the recorder wrapped round it (--record).
+  [[nodiscard]] hal::Robot& robot() noexcept { return recorder_ ? *recorder_ : *robot_; }
   [[nodiscard]] hal::Clock& clock() noexcept;
   [[nodiscard]] executive::EventLog& events() noexcept { return events_; }
   [[nodiscard]] const Telemetry& telemetry() const noexcept { return telemetry_; }
@@ -55,12 +59,16 @@ class FirmwareStack {
   /// The run scored against ground truth, when there is any, else null.
   [[nodiscard]] const TruthScore* truth_score() const noexcept { return truth_score_ ? &*truth_score_ : nullptr; }
 
+  /// Ends the --record and --wb-log logs (after the run): one line per log that failed, else empty.
+  [[nodiscard]] std::vector<std::string> finish_logs() noexcept;
+
   /// Frames in `seconds` of schedule time (rounded up).
   [[nodiscard]] std::uint64_t frames_for(double seconds) const noexcept;
 
  private:
   FirmwareConfig config_;
   std::unique_ptr<hal::Robot> robot_;
+  std::unique_ptr<hal::RecordingRobot> recorder_;  // --record
   hal::VirtualClock virtual_clock_;
   hal::MonotonicClock monotonic_clock_;
   hal::ThreadStopwatch stopwatch_;
@@ -68,6 +76,7 @@ class FirmwareStack {
   wb::Whiteboard board_;
   std::unique_ptr<FsmStatusLog> fsm_status_log_;
   std::uint64_t fsm_status_seen_ = 0;
+  std::unique_ptr<wb::MessageLogger> message_log_;  // --wb-log
   Telemetry telemetry_;
   behaviour::machines::BallTracker ball_tracker_;
   behaviour::machines::Mission mission_machine_;

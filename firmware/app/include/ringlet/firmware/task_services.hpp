@@ -9,6 +9,7 @@
 #include "ringlet/firmware/config.hpp"
 #include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/hal/robot.hpp"
+#include "ringlet/whiteboard/message_log.hpp"
 #include "ringlet/whiteboard/whiteboard.hpp"
 
 namespace ringlet::executive {
@@ -26,6 +27,8 @@ struct TaskServices {
   Telemetry& telemetry;
   /// The executive is built after its tasks; this points at it before the first frame.
   const executive::Executive* const& executive;
+  /// --wb-log: told the frame before each dispatch (null when not logging).
+  wb::MessageLogger* message_log;
 };
 
 }  // namespace ringlet::firmware

@@ -1,6 +1,6 @@
 #pragma once
-// The cycle's one defined point for whiteboard subscriptions (dispatch, in type-id order), and
-// once a second the executive's counters as ExecutiveTiming.
+// The cycle's one defined point for whiteboard subscriptions (dispatch, in type-id order; the
+// --wb-log logger is one of them), and once a second the executive's counters as ExecutiveTiming.
 #include <memory>
 
 #include "ringlet/executive/task.hpp"
@@ -17,14 +17,15 @@ class WhiteboardTask final : public executive::Task {
   static constexpr hal::Nanos kModelledCost{6'000};
 
   static std::unique_ptr<executive::Task> make(TaskServices& services);
-  WhiteboardTask(wb::Whiteboard& board, const executive::Executive* const& executive) noexcept
-      : board_(board), executive_(executive) {}
+  WhiteboardTask(wb::Whiteboard& board, const executive::Executive* const& executive, wb::MessageLogger* log) noexcept
+      : board_(board), executive_(executive), log_(log) {}
   void run(const executive::TaskContext& ctx) noexcept override;
   [[nodiscard]] hal::Nanos modelled_cost() const noexcept override { return kModelledCost; }
 
  private:
   wb::Whiteboard& board_;
   const executive::Executive* const& executive_;
+  wb::MessageLogger* log_;
 };
 
 }  // namespace ringlet::firmware
