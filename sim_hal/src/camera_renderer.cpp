@@ -311,4 +311,4 @@ void CameraRenderer::render_pixels() noexcept {
   }
 }
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

@@ -128,4 +128,4 @@ void CameraRenderer::compute_truth() noexcept {
   }
 }
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

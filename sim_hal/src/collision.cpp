@@ -104,4 +104,4 @@ bool disc_collides(const World& world, Vec2 centre, double radius) noexcept {
   return false;
 }
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

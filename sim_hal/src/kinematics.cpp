@@ -56,4 +56,4 @@ CarState step_car(const CarState& state, const hal::DriveCommand& command, const
   return next;
 }
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

@@ -149,4 +149,4 @@ const FrameTruth* SimCamera::latest_truth() const noexcept {
   return latest_ < 0 ? nullptr : &slots_[static_cast<std::size_t>(latest_)].truth;
 }
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

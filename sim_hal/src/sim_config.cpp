@@ -50,4 +50,4 @@ void validate(const SimConfig& config) {
   if (config.camera.enabled) validate(config.camera);
 }
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

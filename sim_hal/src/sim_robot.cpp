@@ -167,4 +167,4 @@ void SimRobot::measure(hal::SensorFrame& out) noexcept {
   out.collided = in_contact_;
 }
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

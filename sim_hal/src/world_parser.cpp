@@ -371,4 +371,4 @@ World load_world(const std::filesystem::path& path) {
   return parse_world(file.bytes, path.string());
 }
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

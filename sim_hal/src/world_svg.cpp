@@ -349,4 +349,4 @@ void write_world_svg(const std::filesystem::path& path, const World& world, cons
   if (!file) fail(errno);
 }
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

@@ -22,17 +22,17 @@ using test::parse_as_shipped;
 using test::shipped_config_text;
 using test::with_line;
 
-struct Run {
+struct RunResult {
   MissionSummary summary;
   RunOutcome outcome;
   bool picture = false;
 };
 
-Run run(const FirmwareConfig& cfg) {
+RunResult run(const FirmwareConfig& cfg) {
   FirmwareStack stack(cfg);
   std::atomic<bool> interrupt{false};
   std::ostringstream log;
-  Run r;
+  RunResult r;
   r.outcome = run_mission(stack, cfg.mission.timeout_s, interrupt, log);
   EXPECT_TRUE(stack.finish_logs().empty());
   r.summary = summarize(stack, r.outcome, false);
@@ -44,9 +44,9 @@ Run run(const FirmwareConfig& cfg) {
 // The whiteboard log without ExecutiveTiming: that message carries the host's measured task
 // times, which differ between any two runs by nature.
 wb::MessageLog controller_messages(const std::filesystem::path& path) {
-  auto log = wb::read_message_log(path);
-  EXPECT_TRUE(log.ok()) << path;
-  wb::MessageLog out = log.ok() ? std::move(*log) : wb::MessageLog{};
+  const auto log = wb::read_message_log(path);
+  EXPECT_TRUE(log.has_value()) << path;
+  wb::MessageLog out = log.has_value() ? *log : wb::MessageLog{};
   std::erase_if(out.messages, [](const wb::LoggedMessage& m) { return m.type == wb::ExecutiveTiming::kId; });
   return out;
 }
@@ -70,12 +70,12 @@ class Replay : public ::testing::Test {
     FirmwareConfig recorded = parse_as_shipped(text);
     recorded.record_log = dir_ / "run.hallog";
     recorded.whiteboard_log = dir_ / "recorded.wblog";
-    const Run a = run(recorded);
+    const RunResult a = run(recorded);
 
     FirmwareConfig replayed = parse_as_shipped(replay_of(text, recorded.record_log));
     ASSERT_EQ(replayed.backend, "replay");
     replayed.whiteboard_log = dir_ / "replayed.wblog";
-    const Run b = run(replayed);
+    const RunResult b = run(replayed);
 
     const wb::MessageLog want = controller_messages(recorded.whiteboard_log);
     const wb::MessageLog got = controller_messages(replayed.whiteboard_log);
@@ -88,8 +88,8 @@ class Replay : public ::testing::Test {
     EXPECT_EQ(a.summary.goals_reached, b.summary.goals_reached);
     EXPECT_EQ(a.summary.goal_count, b.summary.goal_count) << "the mission comes from the configuration";
     EXPECT_GT(b.summary.goal_count, 0U);
-    EXPECT_TRUE(a.summary.head.has_value()) << "the simulator has ground truth";
-    EXPECT_FALSE(b.summary.head.has_value()) << "a replay has none: its columns are left out";
+    EXPECT_TRUE(a.summary.truth.has_value()) << "the simulator has ground truth";
+    EXPECT_FALSE(b.summary.truth.has_value()) << "a replay has none: its columns are left out";
     EXPECT_TRUE(a.picture);
     EXPECT_FALSE(b.picture) << "no truth, no world to draw";
     EXPECT_EQ(b.summary.backend, "replay");
@@ -112,7 +112,7 @@ TEST_F(Replay, TheRunEndsWhereTheLogEnds) {
   (void)run(recorded);
   const auto replayed = parse_as_shipped(replay_of(with_line(shipped_config_text(), "timeout_s", "timeout_s = 10"),
                                                    recorded.record_log));
-  const Run r = run(replayed);
+  const RunResult r = run(replayed);
   EXPECT_EQ(r.outcome.reason, executive::StopReason::kRequested);
   EXPECT_NEAR(r.outcome.schedule_seconds, 1.01, 1e-9) << "100 recorded frames, then the frame that found the end";
 }

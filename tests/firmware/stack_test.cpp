@@ -92,10 +92,10 @@ TEST(FirmwareStack, TheThreeMachinesRunAndTheirStatusIsOnTheWhiteboard) {
 
 TEST(FirmwareStack, TheHeadTracksTheBall) {
   const auto r = run(shipped());
-  ASSERT_TRUE(r.summary.head.has_value()) << "the simulator has ground truth: the head is scored";
-  ASSERT_GT(r.summary.head->frames, 1000U);
-  EXPECT_GT(r.summary.head->on_target_share(), 0.95) << "head yaw within 5 degrees of the true ball";
-  EXPECT_LT(r.summary.head->mean_error(), 0.03);
+  ASSERT_TRUE(r.summary.truth.has_value()) << "the simulator has ground truth: the head is scored";
+  ASSERT_GT(r.summary.truth->head.frames, 1000U);
+  EXPECT_GT(r.summary.truth->head.on_target_share(), 0.95) << "head yaw within 5 degrees of the true ball";
+  EXPECT_LT(r.summary.truth->head.mean_error(), 0.03);
 }
 
 TEST(FirmwareStack, SafetyMachineStopsTheRobotBeforeAWall) {
@@ -128,8 +128,8 @@ TEST(FirmwareVision, LinesAndBallAreDetectedAndTheHeadFollowsTheDetectedBall) {
   EXPECT_GT(static_cast<double>(v.with_ball), 0.6 * static_cast<double>(v.frames));
   EXPECT_EQ(r.summary.collisions, 0U);
   // The ball belief comes from vision now, and the tracker keeps the head on the true ball.
-  ASSERT_TRUE(r.summary.head.has_value());
-  EXPECT_GT(r.summary.head->on_target_share(), 0.7);
+  ASSERT_TRUE(r.summary.truth.has_value());
+  EXPECT_GT(r.summary.truth->head.on_target_share(), 0.7);
   EXPECT_GE(r.vision_timing.runs, v.frames);
   EXPECT_LE(r.vision_timing.runs - v.frames, 2U) << "only the activations before the first frame have nothing to do";
   EXPECT_EQ(r.vision_timing.overruns, 0U);
@@ -145,8 +145,8 @@ TEST(FirmwareVision, SameSeedSameRunWithTheCamera) {
   ASSERT_TRUE(a.summary.vision && b.summary.vision);
   EXPECT_EQ(a.summary.vision->lines, b.summary.vision->lines);
   EXPECT_EQ(a.summary.vision->with_ball, b.summary.vision->with_ball);
-  ASSERT_TRUE(a.summary.head && b.summary.head);
-  EXPECT_EQ(a.summary.head->sum_error, b.summary.head->sum_error) << "the head followed the same detections";
+  ASSERT_TRUE(a.summary.truth && b.summary.truth);
+  EXPECT_EQ(a.summary.truth->head.sum_error, b.summary.truth->head.sum_error) << "the head followed the same detections";
 }
 
 TEST(FirmwareVision, MissingColourTableIsAConfigError) {

@@ -56,7 +56,7 @@ std::vector<Cycle> run(Robot& robot, std::size_t cycles) {
       c.stride = v.stride;
       c.pixels.assign(v.data, v.data + static_cast<std::ptrdiff_t>(v.stride) * v.height);
     }
-    robot.actuators().write(ActuatorCommand{DriveCommand{0.1, 0.2 + static_cast<double>(i)}, HeadCommand{}});
+    robot.actuators().write(ActuatorCommand{DriveCommand{0.1, 0.2 + static_cast<double>(i)}, HeadTarget{}});
     seen.push_back(std::move(c));
   }
   return seen;

@@ -62,4 +62,4 @@ TEST(SimCameraNoAllocation, SimRobotWithCameraAllocatesNothingInTheCycle) {
 }
 
 }  // namespace
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

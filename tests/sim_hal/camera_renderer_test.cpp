@@ -152,4 +152,4 @@ TEST(SimCameraRenderer, SameSeedSameBytesOtherSeedOtherTexture) {
 }
 
 }  // namespace
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

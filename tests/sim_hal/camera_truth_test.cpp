@@ -129,4 +129,4 @@ TEST(SimCameraTruth, NothingBehindTheCamera) {
 }
 
 }  // namespace
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

@@ -156,4 +156,4 @@ TEST(SimKinematics, StepCarReadsANonFiniteCommandAsStop) {
 }
 
 }  // namespace
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

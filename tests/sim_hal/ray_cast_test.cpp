@@ -141,4 +141,4 @@ TEST(SimRayCast, LaserBeamsTurnWithTheRobot) {
 }
 
 }  // namespace
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

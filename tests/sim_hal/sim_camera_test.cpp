@@ -152,4 +152,4 @@ TEST(SimCamera, DestroyedWhileRenderingJoinsCleanly) {
 }
 
 }  // namespace
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

@@ -330,4 +330,4 @@ TEST(SimValidate, DefaultsAndEdgesAreAccepted) {
 }
 
 }  // namespace
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

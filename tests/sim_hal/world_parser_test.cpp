@@ -287,4 +287,4 @@ TEST(SimWorldParser, MessageIsExactlySourceLineMessage) {
 }
 
 }  // namespace
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

@@ -171,4 +171,4 @@ TEST(SimSvg, UnwritableFileNamesThePath) {
 }
 
 }  // namespace
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

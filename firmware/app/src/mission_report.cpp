@@ -62,12 +62,14 @@ std::uint64_t run_hash(const FirmwareStack& stack, const MissionSummary& s) noex
   }
   // The head-tracking score counts, not its error sum: the error is computed for scoring with libm
   // (atan2), whose last bits differ between x86-64 and aarch64, and it decides nothing.
-  if (s.head) {
-    f.bits(s.head->frames);
-    f.bits(s.head->on_target);
+  if (s.truth) {
+    f.bits(s.truth->head.frames);
+    f.bits(s.truth->head.on_target);
   }
   return f.h;
 }
+
+std::string seed_text(const MissionSummary& s) { return s.seed ? std::to_string(*s.seed) : std::string("none"); }
 
 }  // namespace
 
@@ -87,7 +89,7 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
   const Telemetry& telemetry = stack.telemetry();
   s.backend = cfg.backend;
   s.world = cfg.backend_settings ? cfg.backend_settings->source_name() : std::string();
-  s.seed = cfg.seed();
+  if (cfg.seed_override || (cfg.backend_settings && cfg.backend_settings->seed())) s.seed = cfg.seed();
   s.goals_reached = telemetry.goals_reached();
   s.goal_count = cfg.mission.goals.size();
   s.complete = s.goal_count > 0 && s.goals_reached == s.goal_count;
@@ -115,7 +117,10 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
     s.machines.push_back({std::string(m.name()), std::string(m.current_state_name()), m.ringlets(), m.suspended()});
   }
   s.fsm_status_seen = stack.fsm_status_seen();
-  if (const TruthScore* score = stack.truth_score()) s.head = score->head_tracking();
+  if (const hal::GroundTruth* truth = stack.truth()) {
+    s.truth = TruthSummary{truth->distance_travelled(), truth->collisions(),
+                           stack.truth_score() != nullptr ? stack.truth_score()->head_tracking() : HeadTracking{}};
+  }
   if (const VisionStats* v = telemetry.vision()) s.vision = *v;
   s.run_hash = run_hash(stack, s);
   return s;
@@ -125,11 +130,11 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
   char line[512];
   std::snprintf(line, sizeof line,
                 "MISSION %s — %zu/%zu goals in %.2f s (simulated on %s, %.3f s of host time)\n"
-                "  world %s, seed %llu, distance %.2f m, collisions %llu, safe state forced: %s%s%s%s\n"
+                "  world %s, seed %s, distance %.2f m, collisions %llu, safe state forced: %s%s%s%s\n"
                 "  trajectory hash %016llx  run hash %016llx\n",
                 s.complete ? "COMPLETE" : (s.interrupted ? "INTERRUPTED" : "INCOMPLETE"), s.goals_reached,
                 s.goal_count, s.mission_seconds, s.backend.c_str(), s.wall_seconds, s.world.c_str(),
-                static_cast<unsigned long long>(s.seed), s.distance_m, static_cast<unsigned long long>(s.collisions),
+                seed_text(s).c_str(), s.distance_m, static_cast<unsigned long long>(s.collisions),
                 s.safe_state ? "yes" : "no", s.safe_state_reason.empty() ? "" : " (",
                 s.safe_state_reason.c_str(), s.safe_state_reason.empty() ? "" : ")",
                 static_cast<unsigned long long>(s.trajectory_hash), static_cast<unsigned long long>(s.run_hash));
@@ -159,12 +164,17 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
                   static_cast<unsigned long long>(s.dropped_samples));
     out << line;
   }
-  if (s.head && s.head->frames > 0) {
+  if (s.truth) {
+    std::snprintf(line, sizeof line, "  ground truth: distance %.2f m, collisions %llu\n", s.truth->distance_m,
+                  static_cast<unsigned long long>(s.truth->collisions));
+    out << line;
+  }
+  if (s.truth && s.truth->head.frames > 0) {
     std::snprintf(line, sizeof line,
                   "  head on the ball (true ball, yaw within 5 deg): %.1f %% of %llu frames, mean error "
                   "%.2f deg, max %.1f deg\n",
-                  100.0 * s.head->on_target_share(), static_cast<unsigned long long>(s.head->frames),
-                  hal::rad_to_deg(s.head->mean_error()), hal::rad_to_deg(s.head->max_error));
+                  100.0 * s.truth->head.on_target_share(), static_cast<unsigned long long>(s.truth->head.frames),
+                  hal::rad_to_deg(s.truth->head.mean_error()), hal::rad_to_deg(s.truth->head.max_error));
     out << line;
   }
 }
@@ -186,7 +196,7 @@ nlohmann::json summary_json(const MissionSummary& s) {
   }
   return {{"backend", s.backend},
           {"world", s.world},
-          {"seed", s.seed},
+          {"seed", s.seed ? nlohmann::json(*s.seed) : nlohmann::json(nullptr)},
           {"goals_reached", s.goals_reached},
           {"goal_count", s.goal_count},
           {"complete", s.complete},
@@ -207,11 +217,14 @@ nlohmann::json summary_json(const MissionSummary& s) {
           {"fsm_status_seen", s.fsm_status_seen},
           {"vision", vision},
           {"trajectory_samples_dropped", s.dropped_samples},
-          {"head_tracking", s.head ? nlohmann::json{{"frames", s.head->frames},
-                                                    {"on_target_share", s.head->on_target_share()},
-                                                    {"mean_error_deg", hal::rad_to_deg(s.head->mean_error())},
-                                                    {"max_error_deg", hal::rad_to_deg(s.head->max_error)}}
-                                   : nlohmann::json(nullptr)}};
+          {"ground_truth", s.truth ? nlohmann::json{{"distance_m", s.truth->distance_m},
+                                                    {"collisions", s.truth->collisions}}
+                                   : nlohmann::json(nullptr)},
+          {"head_tracking", s.truth ? nlohmann::json{{"frames", s.truth->head.frames},
+                                                     {"on_target_share", s.truth->head.on_target_share()},
+                                                     {"mean_error_deg", hal::rad_to_deg(s.truth->head.mean_error())},
+                                                     {"max_error_deg", hal::rad_to_deg(s.truth->head.max_error)}}
+                                    : nlohmann::json(nullptr)}};
 }
 
 bool write_picture(std::ostream& out, const FirmwareStack& stack, const MissionSummary& s) {
@@ -220,9 +233,9 @@ bool write_picture(std::ostream& out, const FirmwareStack& stack, const MissionS
   std::vector<hal::WorldPoint> goals;
   for (const auto& g : stack.config().mission.goals) goals.push_back({g.x, g.y});
   char caption[256];
-  std::snprintf(caption, sizeof caption, "%s: %zu/%zu goals in %.1f s, %.1f m, %llu collisions (seed %llu)",
+  std::snprintf(caption, sizeof caption, "%s: %zu/%zu goals in %.1f s, %.1f m, %llu collisions (seed %s)",
                 s.world.c_str(), s.goals_reached, s.goal_count, s.mission_seconds, s.distance_m,
-                static_cast<unsigned long long>(s.collisions), static_cast<unsigned long long>(s.seed));
+                static_cast<unsigned long long>(s.collisions), seed_text(s).c_str());
   truth->write_picture(out, hal::RunPicture{stack.telemetry().trajectory(), stack.telemetry().collision_points(),
                                             goals, s.goals_reached, caption});
   return true;

@@ -48,8 +48,9 @@ std::unique_ptr<hal::RecordingRobot> make_recorder(const FirmwareConfig& config,
   options.period = config.executive.period;
   options.note = "ringlet --config " + config.source.string();
   if (robot.camera() != nullptr) {
-    options.max_camera_frame_bytes = hal::camera_frame_bytes(config.camera.format, config.camera.intrinsics.width,
-                                                             config.camera.intrinsics.height);
+    options.max_camera_frame_bytes =
+        hal::camera_frame_bytes(config.camera.format, static_cast<std::size_t>(config.camera.intrinsics.width),
+                                static_cast<std::size_t>(config.camera.intrinsics.height));
   }
   try {
     return std::make_unique<hal::RecordingRobot>(robot, config.record_log, options);

@@ -90,4 +90,4 @@ class CameraRenderer {
   std::uint64_t ball_pixels_shown_ = 0;  // of those, where the ball is the nearest thing
 };
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

@@ -47,4 +47,4 @@ struct FrameTruth {
   BallTruth ball{};
 };
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

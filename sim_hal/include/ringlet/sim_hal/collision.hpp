@@ -13,4 +13,4 @@ namespace ringlet::sim_hal {
 /// True when a disc of `radius` at `centre` overlaps an obstacle or leaves the bounds.
 [[nodiscard]] bool disc_collides(const World& world, Vec2 centre, double radius) noexcept;
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

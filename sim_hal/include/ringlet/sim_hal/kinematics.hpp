@@ -29,4 +29,4 @@ struct CarState {
 [[nodiscard]] CarState step_car(const CarState& state, const hal::DriveCommand& command, const CarLimits& limits,
                                 double dt) noexcept;
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

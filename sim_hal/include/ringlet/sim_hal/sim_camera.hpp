@@ -94,4 +94,4 @@ class SimCamera final : public hal::Camera {
   std::thread thread_;
 };
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

@@ -100,4 +100,4 @@ class SimRobot : public hal::Robot, private hal::Sensors, private hal::Actuators
   std::unique_ptr<SimCamera> camera_;  // last: its thread starts once everything else exists
 };
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

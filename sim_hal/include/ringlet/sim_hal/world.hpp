@@ -95,4 +95,4 @@ class WorldError : public std::runtime_error {
 /// file; an unreadable file is a WorldError naming the path and why.
 [[nodiscard]] World load_world(const std::filesystem::path& path);
 
-}  // namespace ringlet::sim
+}  // namespace ringlet::sim_hal

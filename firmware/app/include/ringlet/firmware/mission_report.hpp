@@ -22,10 +22,17 @@ struct MachineSummary {
   bool suspended = false;
 };
 
+/// What ground truth says about the run (backends that have it: the simulator).
+struct TruthSummary {
+  double distance_m = 0;        // really driven
+  std::uint64_t collisions = 0; // contact events
+  HeadTracking head{};          // measured head yaw against the true ball
+};
+
 struct MissionSummary {
   std::string backend;
   std::string world;
-  std::uint64_t seed = 0;
+  std::optional<std::uint64_t> seed;  // none: the backend has no randomness (a replay)
   std::size_t goals_reached = 0;
   std::size_t goal_count = 0;
   bool complete = false;
@@ -46,7 +53,7 @@ struct MissionSummary {
   std::vector<MachineSummary> machines;
   std::uint64_t fsm_status_seen = 0;  // FsmStatus delivered by the stack's whiteboard subscription
   std::uint64_t dropped_samples = 0;  // trajectory samples the buffer had no room for
-  std::optional<HeadTracking> head;   // with ground truth: measured head yaw against the true ball
+  std::optional<TruthSummary> truth;  // only with ground truth
   std::optional<VisionStats> vision;  // with a camera: what vision found
 };
 

@@ -26,9 +26,12 @@ struct TaskDeclaration {
   std::span<const std::string_view> provides_types;
   std::source_location where;
 
-  /// "file:line" of the declaration, for start-up messages.
+  /// "file:line" of the declaration, for start-up messages. The compiler may have been handed the
+  /// file relative to the build folder (ccache's base_dir does that): leading "../" go.
   [[nodiscard]] std::string location() const {
-    return std::string(where.file_name()) + ":" + std::to_string(where.line());
+    std::string_view file = where.file_name();
+    while (file.starts_with("../")) file.remove_prefix(3);
+    return std::string(file) + ":" + std::to_string(where.line());
   }
 };
 
