@@ -67,9 +67,13 @@ std::string spl_field_policies_acting(double seconds) {
                    "  { name = \"telemetry\", every = 1, phase = 0, budget_us = 3, policy = \"skip\" },");
 }
 
-constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0xb66542de2f7d669cULL, 0x5e64f0f19e6f37f5ULL};
-constexpr Golden kSplField{"spl_field.toml (8 s)", 0xf7f8090332d96d00ULL, 0xc02dfd0d46d93536ULL};
-constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x5620a62c0b652a82ULL, 0x8daafb1119d1b638ULL};
+// Issue 9 changed them, for these reasons only: the task table has the goals and ball_sensor rows
+// (task names and counts are hashed), and the run ends when Mission has posted MissionStatus.done
+// from its Done state, one frame after the transition the old telemetry task read off the machine
+// object; so the courtyard's trajectory has one more final sample. The SPL trajectories are equal.
+constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0x2b3a1ae0c646d27aULL, 0xdbacd985f271b7ddULL};
+constexpr Golden kSplField{"spl_field.toml (8 s)", 0xf7f8090332d96d00ULL, 0xa42ef089e6256d79ULL};
+constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x5620a62c0b652a82ULL, 0xd851dd76cbd00a9bULL};
 
 TEST(GoldenRun, CourtyardMission) {
   const auto s = run(courtyard(), kCourtyard.name);
