@@ -343,7 +343,7 @@ def main(argv=None):
     os.chdir(ROOT)
     started = time.time() - 1  # files written from here on are this run's
     b = Path(args.build_dir)
-    tools = {"ringlet": b / "firmware/ringlet", "dataset": b / "sim_hal/tools/dataset/ringlet-dataset",
+    tools = {"ringlet": b / "firmware/ringlet", "dataset": b / "tools/dataset/ringlet-dataset",
              "vision": b / "vision/tools/ringlet-vision", "eval": b / "vision/tools/ringlet-vision-eval"}
     needed = ["ringlet"] + ([] if args.no_vision else ["dataset", "vision", "eval"])
     missing = [str(tools[t]) for t in needed if not os.access(tools[t], os.X_OK)]
