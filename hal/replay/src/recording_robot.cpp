@@ -154,28 +154,31 @@ struct RecordingRobot::Impl {
     return s;
   }
 
+  /// The slot for the next record of `kind`, or nullptr when it is dropped (counted in `drop_count`).
+  Slot* try_begin(RecordKind kind, std::uint32_t& drop_count, bool with_frame) noexcept {
+    if (!acquire(with_frame)) {
+      drop(drop_count);
+      return nullptr;
+    }
+    return &begin(kind);
+  }
+
   void record_sensor(bool ok, const SensorFrame& frame) noexcept {
     const std::uint64_t index = reads++;
-    if (!acquire(false)) {
-      drop(pending.sensor);
-      return;
-    }
-    Slot& s = begin(RecordKind::kSensor);
-    s.reads = index;
-    s.ok = ok;
-    s.sensor = frame;
+    Slot* s = try_begin(RecordKind::kSensor, pending.sensor, false);
+    if (s == nullptr) return;
+    s->reads = index;
+    s->ok = ok;
+    s->sensor = frame;
     records.publish();
   }
 
   void record_ball(bool ok, const BallSighting& sighting) noexcept {
-    if (!acquire(false)) {
-      drop(pending.ball);
-      return;
-    }
-    Slot& s = begin(RecordKind::kBall);
-    s.reads = reads;
-    s.ok = ok;
-    s.ball = sighting;
+    Slot* s = try_begin(RecordKind::kBall, pending.ball, false);
+    if (s == nullptr) return;
+    s->reads = reads;
+    s->ok = ok;
+    s->ball = sighting;
     records.publish();
   }
 
@@ -192,21 +195,19 @@ struct RecordingRobot::Impl {
       drop(pending.camera);
       return;
     }
-    if (!acquire(true)) {
-      drop(pending.camera);
-      return;
-    }
+    Slot* s = try_begin(RecordKind::kCamera, pending.camera, true);
+    if (s == nullptr) return;
+    // The pixels go first: the writer reads the frame ring only for a published camera record.
     std::memcpy(frame_slots[frames.write_slot()].data(), f.data, bytes);
     frames.publish();
-    Slot& s = begin(RecordKind::kCamera);
-    s.reads = reads;
-    s.camera.reads = reads;
-    s.camera.capture_time = f.capture_time;
-    s.camera.sequence = f.sequence;
-    s.camera.format = f.format;
-    s.camera.width = static_cast<std::uint32_t>(f.width);
-    s.camera.height = static_cast<std::uint32_t>(f.height);
-    s.camera.stride = static_cast<std::uint32_t>(f.stride);
+    s->reads = reads;
+    s->camera.reads = reads;
+    s->camera.capture_time = f.capture_time;
+    s->camera.sequence = f.sequence;
+    s->camera.format = f.format;
+    s->camera.width = static_cast<std::uint32_t>(f.width);
+    s->camera.height = static_cast<std::uint32_t>(f.height);
+    s->camera.stride = static_cast<std::uint32_t>(f.stride);
     records.publish();
   }
 
