@@ -1,18 +1,13 @@
 #include "ringlet/whiteboard/message_log.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <array>
-#include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <mutex>
 #include <stdexcept>
-#include <system_error>
 #include <thread>
 
+#include "ringlet/hal/log_file.hpp"
 #include "ringlet/hal/read_file.hpp"
 #include "ringlet/hal/spsc_cursor.hpp"
 #include "ringlet/whiteboard/whiteboard.hpp"
@@ -26,8 +21,6 @@ constexpr std::size_t kFlushBytes = 1u << 20;
 constexpr auto kIdleSleep = std::chrono::milliseconds{1};
 constexpr std::size_t kTypeEntryBytes = 8;
 constexpr std::size_t kMessagePrefixBytes = 24;  // frame, generation, missed
-
-std::string errno_text(int err) { return std::generic_category().message(err); }
 
 void put(std::vector<std::byte>& out, std::uint64_t v, int bytes) {
   for (int i = 0; i < bytes; ++i) out.push_back(static_cast<std::byte>(v >> (8 * i)));
@@ -72,11 +65,11 @@ struct MessageLogger::State {
     std::array<std::byte, kMaxEncodedMessageBytes> bytes{};
   };
 
-  State(std::string p, MessageLogOptions opts) : path(std::move(p)), options(opts), cursor(opts.slots) {}
+  State(std::string path, MessageLogOptions opts)
+      : file(std::move(path), "whiteboard log"), options(opts), cursor(opts.slots) {}
 
-  std::string path;
+  hal::LogFile file;
   MessageLogOptions options;
-  int fd = -1;
   hal::SpscCursor cursor;
   std::vector<Slot> slots;
 
@@ -94,7 +87,6 @@ struct MessageLogger::State {
 
   std::vector<std::byte> out;
   std::uint64_t gap_total = 0;
-  bool write_failed = false;
 
   template <class T>
   void on_message(const T& msg, const DeliveryInfo& info) noexcept {
@@ -123,17 +115,7 @@ struct MessageLogger::State {
   }
 
   void flush() {
-    std::size_t done = 0;
-    while (!write_failed && done < out.size()) {
-      const ssize_t n = ::write(fd, out.data() + done, out.size() - done);
-      if (n < 0) {
-        if (errno == EINTR) continue;
-        write_failed = true;
-        set_error(path + ": cannot write whiteboard log: " + errno_text(errno));
-        break;
-      }
-      done += static_cast<std::size_t>(n);
-    }
+    if (!file.write_all(out.data(), out.size())) set_error(file.error());
     out.clear();
   }
 
@@ -179,14 +161,7 @@ struct MessageLogger::State {
     if (options.slots == 0) throw std::invalid_argument("MessageLogOptions: slots must be at least 1");
     slots.resize(options.slots);
     out.reserve(kFlushBytes + kMaxEncodedMessageBytes + 64);
-    fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NONBLOCK | O_NOCTTY, 0644);
-    if (fd < 0) throw std::runtime_error(path + ": cannot create whiteboard log: " + errno_text(errno));
-    struct stat st {};
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-      ::close(fd);
-      fd = -1;
-      throw std::runtime_error(path + ": cannot create whiteboard log: not a regular file");
-    }
+    if (std::string refused = file.create(); !refused.empty()) throw std::runtime_error(refused);
     for (char c : kMessageLogMagic) out.push_back(static_cast<std::byte>(c));
     put(out, kMessageLogVersion, 4);
     put(out, kTypeCount, 4);
@@ -197,10 +172,9 @@ struct MessageLogger::State {
       put(out, payload_size<T>(), 4);
     });
     flush();
-    if (write_failed) {
-      ::close(fd);
-      fd = -1;
-      throw std::runtime_error(error);
+    if (file.failed()) {
+      file.close();
+      throw std::runtime_error(file.error());
     }
     writer = std::thread([this] { run(); });
   }
@@ -211,8 +185,7 @@ struct MessageLogger::State {
     active.store(false, std::memory_order_relaxed);
     stopping.store(true, std::memory_order_release);
     writer.join();
-    if (::close(fd) != 0 && !write_failed) set_error(path + ": cannot write whiteboard log: " + errno_text(errno));
-    fd = -1;
+    if (!file.close()) set_error(file.error());
   }
 
   MessageLogStatus status() const {

@@ -1,25 +1,18 @@
 #include "ringlet/hal/recording_robot.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <atomic>
-#include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <mutex>
 #include <stdexcept>
-#include <system_error>
 #include <thread>
 #include <vector>
 
+#include "ringlet/hal/log_file.hpp"
 #include "ringlet/hal/spsc_cursor.hpp"
 
 namespace ringlet::hal {
 namespace {
-
-std::string errno_text(int err) { return std::generic_category().message(err); }
 
 // The writer hands the kernel this much at a time (or less when it has caught up).
 constexpr std::size_t kFlushBytes = 1u << 20;
@@ -93,6 +86,7 @@ struct RecordingRobot::Impl {
   Impl(Robot& inner_robot, const std::filesystem::path& log, RecordingOptions opts)
       : inner(inner_robot),
         path(log.string()),
+        file(path, "HAL log"),
         options(std::move(opts)),
         records(options.record_slots),
         frames(options.camera_slots == 0 ? 1 : options.camera_slots),
@@ -100,8 +94,8 @@ struct RecordingRobot::Impl {
 
   Robot& inner;
   std::string path;
+  LogFile file;
   RecordingOptions options;
-  int fd = -1;
 
   SpscCursor records;
   std::vector<Slot> slots;
@@ -130,7 +124,6 @@ struct RecordingRobot::Impl {
   // Writer state.
   std::vector<std::uint8_t> out;
   std::uint64_t gap_total = 0;
-  bool write_failed = false;
 
   void set_error(std::string e) {
     const std::lock_guard lock(error_mutex);
@@ -138,6 +131,12 @@ struct RecordingRobot::Impl {
   }
 
   // ---- producer side (cycle thread): copy, never allocate, wait only in kLossless ------------
+
+  // A record the queue (or the frame size limit) cannot take: the next queued record carries a gap for it.
+  void drop(std::uint32_t& pending_count) noexcept {
+    pending_count = saturating_inc(pending_count);
+    dropped.fetch_add(1, std::memory_order_relaxed);
+  }
 
   bool acquire(bool with_frame) noexcept {
     if (records.can_write() && (!with_frame || frames.can_write())) return true;
@@ -155,30 +154,31 @@ struct RecordingRobot::Impl {
     return s;
   }
 
+  /// The slot for the next record of `kind`, or nullptr when it is dropped (counted in `drop_count`).
+  Slot* try_begin(RecordKind kind, std::uint32_t& drop_count, bool with_frame) noexcept {
+    if (!acquire(with_frame)) {
+      drop(drop_count);
+      return nullptr;
+    }
+    return &begin(kind);
+  }
+
   void record_sensor(bool ok, const SensorFrame& frame) noexcept {
     const std::uint64_t index = reads++;
-    if (!acquire(false)) {
-      pending.sensor = saturating_inc(pending.sensor);
-      dropped.fetch_add(1, std::memory_order_relaxed);
-      return;
-    }
-    Slot& s = begin(RecordKind::kSensor);
-    s.reads = index;
-    s.ok = ok;
-    s.sensor = frame;
+    Slot* s = try_begin(RecordKind::kSensor, pending.sensor, false);
+    if (s == nullptr) return;
+    s->reads = index;
+    s->ok = ok;
+    s->sensor = frame;
     records.publish();
   }
 
   void record_ball(bool ok, const BallSighting& sighting) noexcept {
-    if (!acquire(false)) {
-      pending.ball = saturating_inc(pending.ball);
-      dropped.fetch_add(1, std::memory_order_relaxed);
-      return;
-    }
-    Slot& s = begin(RecordKind::kBall);
-    s.reads = reads;
-    s.ok = ok;
-    s.ball = sighting;
+    Slot* s = try_begin(RecordKind::kBall, pending.ball, false);
+    if (s == nullptr) return;
+    s->reads = reads;
+    s->ok = ok;
+    s->ball = sighting;
     records.publish();
   }
 
@@ -192,43 +192,29 @@ struct RecordingRobot::Impl {
       if (unrecordable_frames.fetch_add(1, std::memory_order_relaxed) == 0) {
         first_unrecordable_bytes.store(bytes, std::memory_order_relaxed);
       }
-      pending.camera = saturating_inc(pending.camera);
-      dropped.fetch_add(1, std::memory_order_relaxed);
+      drop(pending.camera);
       return;
     }
-    if (!acquire(true)) {
-      pending.camera = saturating_inc(pending.camera);
-      dropped.fetch_add(1, std::memory_order_relaxed);
-      return;
-    }
+    Slot* s = try_begin(RecordKind::kCamera, pending.camera, true);
+    if (s == nullptr) return;
+    // The pixels go first: the writer reads the frame ring only for a published camera record.
     std::memcpy(frame_slots[frames.write_slot()].data(), f.data, bytes);
     frames.publish();
-    Slot& s = begin(RecordKind::kCamera);
-    s.reads = reads;
-    s.camera.reads = reads;
-    s.camera.capture_time = f.capture_time;
-    s.camera.sequence = f.sequence;
-    s.camera.format = f.format;
-    s.camera.width = static_cast<std::uint32_t>(f.width);
-    s.camera.height = static_cast<std::uint32_t>(f.height);
-    s.camera.stride = static_cast<std::uint32_t>(f.stride);
+    s->reads = reads;
+    s->camera.reads = reads;
+    s->camera.capture_time = f.capture_time;
+    s->camera.sequence = f.sequence;
+    s->camera.format = f.format;
+    s->camera.width = static_cast<std::uint32_t>(f.width);
+    s->camera.height = static_cast<std::uint32_t>(f.height);
+    s->camera.stride = static_cast<std::uint32_t>(f.stride);
     records.publish();
   }
 
   // ---- writer thread -------------------------------------------------------------------------
 
   void flush() {
-    std::size_t done = 0;
-    while (!write_failed && done < out.size()) {
-      const ssize_t n = ::write(fd, out.data() + done, out.size() - done);
-      if (n < 0) {
-        if (errno == EINTR) continue;
-        write_failed = true;
-        set_error(path + ": cannot write HAL log: " + errno_text(errno));
-        break;
-      }
-      done += static_cast<std::size_t>(n);
-    }
+    if (!file.write_all(out.data(), out.size())) set_error(file.error());
     out.clear();
   }
 
@@ -287,21 +273,12 @@ struct RecordingRobot::Impl {
     out.reserve(kFlushBytes + kMaxSensorRecordBytes + kCameraFixedBytes + kRecordHeaderBytes +
                 options.max_camera_frame_bytes + 2 * kRecordHeaderBytes + kGapPayloadBytes);
 
-    // O_NONBLOCK: a FIFO without a reader fails at once (ENXIO) instead of blocking the start-up.
-    fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NONBLOCK | O_NOCTTY, 0644);
-    if (fd < 0) throw LogError(path + ": cannot create HAL log: " + errno_text(errno));
-    struct stat st {};
-    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-      ::close(fd);
-      fd = -1;
-      throw LogError(path + ": cannot create HAL log: not a regular file");
-    }
+    if (std::string refused = file.create(); !refused.empty()) throw LogError(refused);
     append_header(out, LogHeader{kRobotLogVersion, options.period, options.note});
     flush();
-    if (write_failed) {
-      ::close(fd);
-      fd = -1;
-      throw LogError(error);
+    if (file.failed()) {
+      file.close();
+      throw LogError(file.error());
     }
     writer = std::thread([this] { run(); });
   }
@@ -317,8 +294,7 @@ struct RecordingRobot::Impl {
     records.publish();
     stopping.store(true, std::memory_order_release);
     writer.join();
-    if (::close(fd) != 0 && !write_failed) set_error(path + ": cannot write HAL log: " + errno_text(errno));
-    fd = -1;
+    if (!file.close()) set_error(file.error());
   }
 
   RecordingStatus status() const {

@@ -1,7 +1,5 @@
 #include "ringlet/hal/robot_log_reader.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
@@ -11,18 +9,10 @@
 #include <system_error>
 
 #include "le_bytes.hpp"
+#include "ringlet/hal/read_file.hpp"
 
 namespace ringlet::hal {
 namespace {
-
-const char* kind_of(mode_t mode) noexcept {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
 
 std::string errno_text(int err) { return std::generic_category().message(err); }
 
@@ -36,7 +26,7 @@ struct RobotLogReader::Impl {
   std::filesystem::path path;
   std::string name;
   LogReaderOptions options;
-  int fd = -1;
+  InputFile file;
   std::uint64_t file_size = 0;  // at open
   std::uint64_t offset = 0;  // of the next byte the reader hands out
   std::vector<std::uint8_t> buffer = std::vector<std::uint8_t>(kFileBufferBytes);
@@ -48,10 +38,6 @@ struct RobotLogReader::Impl {
   std::uint64_t dropped = 0;
   bool saw_end = false;
   std::uint64_t torn = 0;
-
-  ~Impl() {
-    if (fd >= 0) ::close(fd);
-  }
 
   [[noreturn]] void fail(const std::string& what, std::uint64_t at) const {
     throw LogError(name + ": " + what + " at byte " + std::to_string(at));
@@ -67,7 +53,7 @@ struct RobotLogReader::Impl {
     std::size_t got = 0;
     while (got < n) {
       if (buffered_begin == buffered_end) {
-        const ssize_t r = ::read(fd, buffer.data(), buffer.size());
+        const ssize_t r = ::read(file.fd(), buffer.data(), buffer.size());
         if (r < 0) {
           if (errno == EINTR) continue;
           fail("cannot read: " + errno_text(errno), offset);
@@ -103,17 +89,13 @@ struct RobotLogReader::Impl {
     }
     const std::uint64_t beyond = n - in_buffer;
     buffered_begin = buffered_end = 0;
-    if (::lseek(fd, static_cast<off_t>(beyond), SEEK_CUR) < 0) fail("cannot seek: " + errno_text(errno), offset);
+    if (::lseek(file.fd(), static_cast<off_t>(beyond), SEEK_CUR) < 0) fail("cannot seek: " + errno_text(errno), offset);
     offset += n;
   }
 
   void open() {
-    fd = ::open(name.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-    if (fd < 0) fail_open(errno_text(errno));
-    struct stat st {};
-    if (::fstat(fd, &st) != 0) fail_open(errno_text(errno));
-    if (!S_ISREG(st.st_mode)) fail_open(std::string("not a regular file (") + kind_of(st.st_mode) + ")");
-    file_size = static_cast<std::uint64_t>(st.st_size);
+    if (std::string refused = file.open(path); !refused.empty()) fail_open(refused);
+    file_size = file.size();
     read_header();
   }
 

@@ -4,8 +4,10 @@
 // says what is wrong with it. A FIFO, a directory or /dev/zero is refused before a byte is read, so
 // a bad path can neither block the start-up nor eat the memory.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace ringlet::hal {
 
@@ -24,5 +26,27 @@ struct FileRead {
 /// to read. `what` names the file's role in the message ("configuration file", "world file").
 [[nodiscard]] FileRead read_file(const std::filesystem::path& path, std::string_view what,
                                  std::size_t max_bytes = kMaxTextFileBytes);
+
+/// An input file held open, for a reader that streams it (the HAL log) instead of reading it whole;
+/// read_file() opens its files the same way. Closes the file when destroyed.
+class InputFile {
+ public:
+  InputFile() = default;
+  ~InputFile();
+  InputFile(const InputFile&) = delete;
+  InputFile& operator=(const InputFile&) = delete;
+
+  /// Opens `path` read-only; refuses anything but a regular file, without blocking on a FIFO.
+  /// Returns "" or why it cannot ("not a regular file (a FIFO)", or the system's reason); the
+  /// caller puts the path and the file's role in front.
+  [[nodiscard]] std::string open(const std::filesystem::path& path);
+
+  [[nodiscard]] int fd() const noexcept { return fd_; }                 // -1 until open() succeeds
+  [[nodiscard]] std::uint64_t size() const noexcept { return size_; }  // when opened
+
+ private:
+  int fd_ = -1;
+  std::uint64_t size_ = 0;
+};
 
 }  // namespace ringlet::hal
