@@ -15,7 +15,7 @@ namespace ringlet::firmware::test {
 class PrintPoseTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{"print_pose", kTypeNames<wb::Pose>, kTypeNames<wb::Print>,
-                                                std::source_location::current()};
+                                                here()};
   static std::unique_ptr<executive::Task> make(TaskServices& services) {
     return std::make_unique<PrintPoseTask>(services.board);
   }
@@ -38,7 +38,7 @@ class PrintPoseTask final : public executive::Task {
 class NeedsLinesTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{"needs_lines", kTypeNames<wb::FieldLines>, kNoTypes,
-                                                std::source_location::current()};
+                                                here()};
   static std::unique_ptr<executive::Task> make(TaskServices& /*services*/) { return std::make_unique<NeedsLinesTask>(); }
   void run(const executive::TaskContext& /*ctx*/) noexcept override {}
 };

@@ -38,46 +38,46 @@ struct RecordingRobot::Impl {
 
   class RecSensors final : public Sensors {
    public:
-    explicit RecSensors(Impl& impl) : impl_(impl) {}
-    bool read(SensorFrame& out) noexcept override {
-      const bool ok = impl_.inner.sensors().read(out);
-      impl_.record_sensor(ok, out);
+    explicit RecSensors(Impl& impl) : owner_(impl) {}
+    bool read(SensorFrame& reading) noexcept override {
+      const bool ok = owner_.inner.sensors().read(reading);
+      owner_.record_sensor(ok, reading);
       return ok;
     }
 
    private:
-    Impl& impl_;
+    Impl& owner_;
   };
 
   class RecBall final : public BallSensor {
    public:
-    RecBall(Impl& impl, BallSensor& inner) : impl_(impl), inner_(inner) {}
-    bool read(BallSighting& out) noexcept override {
-      const bool ok = inner_.read(out);
-      impl_.record_ball(ok, out);
+    RecBall(Impl& impl, BallSensor& inner) : owner_(impl), inner_(inner) {}
+    bool read(BallSighting& reading) noexcept override {
+      const bool ok = inner_.read(reading);
+      owner_.record_ball(ok, reading);
       return ok;
     }
 
    private:
-    Impl& impl_;
+    Impl& owner_;
     BallSensor& inner_;
   };
 
   class RecCamera final : public Camera {
    public:
-    RecCamera(Impl& impl, Camera& inner) : impl_(impl), inner_(inner) {}
-    bool grab_latest(FrameView& out) noexcept override {
-      const bool ok = inner_.grab_latest(out);
-      if (ok && (!have_sequence_ || out.sequence != last_sequence_)) {
+    RecCamera(Impl& impl, Camera& inner) : owner_(impl), inner_(inner) {}
+    bool grab_latest(FrameView& reading) noexcept override {
+      const bool ok = inner_.grab_latest(reading);
+      if (ok && (!have_sequence_ || reading.sequence != last_sequence_)) {
         have_sequence_ = true;
-        last_sequence_ = out.sequence;
-        impl_.record_camera(out);
+        last_sequence_ = reading.sequence;
+        owner_.record_camera(reading);
       }
       return ok;
     }
 
    private:
-    Impl& impl_;
+    Impl& owner_;
     Camera& inner_;
     bool have_sequence_ = false;
     std::uint64_t last_sequence_ = 0;

@@ -15,28 +15,28 @@ void ReplayActuators::write(const ActuatorCommand& cmd) noexcept {
 struct ReplayRobot::Impl {
   class ReplaySensors final : public Sensors {
    public:
-    explicit ReplaySensors(Impl& impl) : impl_(impl) {}
-    bool read(SensorFrame& out) noexcept override { return impl_.read(out); }
-    [[nodiscard]] bool exhausted() const noexcept override { return impl_.end; }
+    explicit ReplaySensors(Impl& impl) : owner_(impl) {}
+    bool read(SensorFrame& out) noexcept override { return owner_.read(out); }
+    [[nodiscard]] bool exhausted() const noexcept override { return owner_.end; }
 
    private:
-    Impl& impl_;
+    Impl& owner_;
   };
   class ReplayCamera final : public Camera {
    public:
-    explicit ReplayCamera(Impl& impl) : impl_(impl) {}
-    bool grab_latest(FrameView& out) noexcept override { return impl_.grab(out); }
+    explicit ReplayCamera(Impl& impl) : owner_(impl) {}
+    bool grab_latest(FrameView& out) noexcept override { return owner_.grab(out); }
 
    private:
-    Impl& impl_;
+    Impl& owner_;
   };
   class ReplayBall final : public BallSensor {
    public:
-    explicit ReplayBall(Impl& impl) : impl_(impl) {}
-    bool read(BallSighting& out) noexcept override { return impl_.read_ball(out); }
+    explicit ReplayBall(Impl& impl) : owner_(impl) {}
+    bool read(BallSighting& out) noexcept override { return owner_.read_ball(out); }
 
    private:
-    Impl& impl_;
+    Impl& owner_;
   };
 
   explicit Impl(const std::filesystem::path& log, ReplayOptions options)

@@ -4,9 +4,8 @@
 // declaration is written, so that a start-up problem points at the task's own file.
 //
 //   static constexpr TaskDeclaration kDeclaration{
-//       "sense", kNoTypes, kTypeNames<wb::Pose, wb::LaserSummary>, std::source_location::current()};
+//       "sense", kNoTypes, kTypeNames<wb::Pose, wb::LaserSummary>, here()};
 #include <array>
-#include <source_location>
 #include <span>
 #include <string>
 #include <string_view>
@@ -20,18 +19,29 @@ template <wb::Message... Ts>
 inline constexpr std::array<std::string_view, sizeof...(Ts)> kTypeNames{Ts::kName...};
 inline constexpr std::span<const std::string_view> kNoTypes{};
 
+/// Where a declaration is written. std::source_location would do, but clang 14 with GCC 12's
+/// library has none; the builtins behind it work in both compilers.
+struct SourcePlace {
+  const char* file;
+  unsigned line;
+};
+/// The place of the call: `here()` as a declaration's last argument.
+consteval SourcePlace here(const char* file = __builtin_FILE(), unsigned line = __builtin_LINE()) noexcept {
+  return {file, line};
+}
+
 struct TaskDeclaration {
   std::string_view name;
   std::span<const std::string_view> requires_types;
   std::span<const std::string_view> provides_types;
-  std::source_location where;
+  SourcePlace where;
 
   /// "file:line" of the declaration, for start-up messages. The compiler may have been handed the
   /// file relative to the build folder (ccache's base_dir does that): leading "../" go.
   [[nodiscard]] std::string location() const {
-    std::string_view file = where.file_name();
+    std::string_view file = where.file;
     while (file.starts_with("../")) file.remove_prefix(3);
-    return std::string(file) + ":" + std::to_string(where.line());
+    return std::string(file) + ":" + std::to_string(where.line);
   }
 };
 

@@ -13,7 +13,7 @@ namespace ringlet::firmware {
 class ActuateTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{"actuate", kTypeNames<wb::MotionCommand, wb::HeadCommand>, kNoTypes,
-                                                std::source_location::current()};
+                                                here()};
   static constexpr hal::Nanos kModelledCost{3'000};
 
   static std::unique_ptr<executive::Task> make(TaskServices& services);

@@ -15,7 +15,7 @@ namespace ringlet::firmware {
 class BallSensorTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{"ball_sensor", kNoTypes, kTypeNames<wb::BallBelief>,
-                                                std::source_location::current()};
+                                                here()};
   static constexpr hal::Nanos kModelledCost{2'000};
 
   /// ConfigError when the robot has no ball sensor of its own.

@@ -13,7 +13,7 @@ namespace ringlet::firmware {
 
 class FsmTask final : public executive::Task {
  public:
-  static constexpr TaskDeclaration kDeclaration{"fsm", kNoTypes, kNoTypes, std::source_location::current()};
+  static constexpr TaskDeclaration kDeclaration{"fsm", kNoTypes, kNoTypes, here()};
   /// A fixed part per turn (bus poll) and one per ringlet.
   static constexpr hal::Nanos kTurnCost{2'000};
   static constexpr hal::Nanos kRingletCost{1'000};

@@ -13,7 +13,7 @@ namespace ringlet::firmware {
 class GoalsTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{"goals", kNoTypes, kTypeNames<wb::MissionGoals>,
-                                                std::source_location::current()};
+                                                here()};
   static constexpr hal::Nanos kModelledCost{2'000};
 
   static std::unique_ptr<executive::Task> make(TaskServices& services);

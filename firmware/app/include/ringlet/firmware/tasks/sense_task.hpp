@@ -16,7 +16,7 @@ class SenseTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{
       "sense", kNoTypes, kTypeNames<wb::Pose, wb::LaserSummary, wb::HeadPosture, wb::BodyState>,
-      std::source_location::current()};
+      here()};
   /// HAL read and posting. The simulator's own work inside read() (ray casting the laser, waiting
   /// for the render thread) is not the robot's and is not modelled.
   static constexpr hal::Nanos kModelledCost{40'000};

@@ -15,7 +15,7 @@ namespace ringlet::firmware {
 class TelemetryTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{"telemetry", kTypeNames<wb::Pose, wb::BodyState, wb::MissionStatus>,
-                                                kNoTypes, std::source_location::current()};
+                                                kNoTypes, here()};
   static constexpr hal::Nanos kModelledCost{4'000};
 
   static std::unique_ptr<executive::Task> make(TaskServices& services);

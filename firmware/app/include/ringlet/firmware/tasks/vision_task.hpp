@@ -24,7 +24,7 @@ class VisionTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{"vision", kTypeNames<wb::HeadPosture>,
                                                 kTypeNames<wb::FieldLines, wb::BallBelief>,
-                                                std::source_location::current()};
+                                                here()};
   /// An activation that finds no new camera frame.
   static constexpr hal::Nanos kNoFrameCost{2'000};
 

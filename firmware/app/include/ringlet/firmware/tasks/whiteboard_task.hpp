@@ -13,7 +13,7 @@ namespace ringlet::firmware {
 class WhiteboardTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{"whiteboard", kNoTypes, kTypeNames<wb::ExecutiveTiming>,
-                                                std::source_location::current()};
+                                                here()};
   static constexpr hal::Nanos kModelledCost{6'000};
 
   static std::unique_ptr<executive::Task> make(TaskServices& services);
