@@ -254,22 +254,45 @@ def format_like(value, written):
     return f"{value:.{decimals}f}"
 
 
+# What differs between the two inline marker kinds: which of a source's (deterministic, measured)
+# figures the marker names, what such a figure is called, the hint for a figure of the other kind,
+# and how a value that is not a plain number is reported ({run} is the run's value).
+MARKER_KINDS = {
+    "fig": (0, "deterministic", "a measured figure: mark it <!--results:...-->",
+            "is not a plain number (the run gives {run})"),
+    "results": (1, "measured", "a deterministic figure: mark it <!--fig:...-->",
+                "is not a plain number to replace"),
+}
+
+
+def stated_figures(markers, kind, figures, readme_name):
+    """The KIND markers ("fig" or "results") whose source is in FIGURES ({source: (det, meas)}), in
+    README order, each as (marker, the run's figure written at the marker's precision, None), or as
+    (marker, None, problem) when the source has no such figure or the marker's value is not a plain
+    number. One place for both kinds, so `check` and `results` read the markers alike."""
+    index, called, other_hint, not_number = MARKER_KINDS[kind]
+    for mk in markers:
+        if mk.kind != kind or mk.source not in figures:
+            continue
+        own, other = figures[mk.source][index], figures[mk.source][1 - index]
+        if mk.figure not in own:
+            hint = f" ({other_hint})" if mk.figure in other else f" (known: {', '.join(sorted(own))})"
+            yield mk, None, f"{readme_name}:{mk.line}: {mk.key}: no such {called} figure{hint}"
+            continue
+        written = format_like(own[mk.figure], mk.value)
+        if written is None:
+            yield mk, None, (f"{readme_name}:{mk.line}: {mk.key}: '{mk.value}' "
+                             + not_number.format(run=own[mk.figure]))
+            continue
+        yield mk, written, None
+
+
 def check_inline(markers, figures, readme_name):
     """Problems of the fig markers whose source is in FIGURES ({source: (det, meas)})."""
     problems = []
-    for mk in markers:
-        if mk.kind != "fig" or mk.source not in figures:
-            continue
-        det, meas = figures[mk.source]
-        if mk.figure not in det:
-            hint = " (a measured figure: mark it <!--results:...-->)" if mk.figure in meas else \
-                f" (known: {', '.join(sorted(det))})"
-            problems.append(f"{readme_name}:{mk.line}: {mk.key}: no such deterministic figure{hint}")
-            continue
-        want = format_like(det[mk.figure], mk.value)
-        if want is None:
-            problems.append(f"{readme_name}:{mk.line}: {mk.key}: '{mk.value}' is not a plain number "
-                            f"(the run gives {det[mk.figure]})")
+    for mk, want, problem in stated_figures(markers, "fig", figures, readme_name):
+        if problem is not None:
+            problems.append(problem)
         elif want != mk.value.strip():
             problems.append(f"{readme_name}:{mk.line}: {mk.key}: README says '{mk.value.strip()}', "
                             f"the run gives '{want}'")
@@ -338,20 +361,11 @@ def fill(text, markers, blocks, figures, excerpts):
     Returns (new text, problems)."""
     problems = []
     edits = []  # (start, end, replacement) in TEXT
-    for mk in markers:
-        if mk.kind != "results" or mk.source not in figures:
-            continue
-        det, meas = figures[mk.source]
-        if mk.figure not in meas:
-            hint = " (a deterministic figure: mark it <!--fig:...-->)" if mk.figure in det else \
-                f" (known: {', '.join(sorted(meas))})"
-            problems.append(f"README.md:{mk.line}: {mk.key}: no such measured figure{hint}")
-            continue
-        new = format_like(meas[mk.figure], mk.value)
-        if new is None:
-            problems.append(f"README.md:{mk.line}: {mk.key}: '{mk.value}' is not a plain number to replace")
-            continue
-        edits.append((mk.start, mk.end, new))
+    for mk, new, problem in stated_figures(markers, "results", figures, "README.md"):
+        if problem is not None:
+            problems.append(problem)
+        else:
+            edits.append((mk.start, mk.end, new))
     lines = text.split("\n")
     starts = [0]
     for line in lines:

@@ -322,6 +322,23 @@ def results_markdown(fx, missions, skipped, realtime, vision, commands):
     return "\n".join(md)
 
 
+def for_each_config(configs, run_one):
+    """RUN_ONE(config) for every configuration in turn, so that one failing hides no other: (the results,
+    the problems in configuration order). RUN_ONE returns (result, problem or None), or raises Failed
+    for a configuration that gave no result."""
+    results, problems = [], []
+    for config in configs:
+        try:
+            result, problem = run_one(config)
+        except Failed as e:
+            problems.append(str(e))
+            continue
+        results.append(result)
+        if problem is not None:
+            problems.append(problem)
+    return results, problems
+
+
 # ---------------------------------------------------------------------------------------------
 # The command
 # ---------------------------------------------------------------------------------------------
@@ -386,38 +403,44 @@ def main(argv=None):
         state["skipped"] = skipped
         for path, why in skipped:
             say(f"   {path}: not run here: {why}")
-        missions, problems = [], []
-        for config in runnable:
-            try:
-                r = run_mission(tools["ringlet"], config)
-                missions.append(r)
-                commands.append(f"{r['svg']}: ringlet --config {config} --lockstep --report {WORK}/{config.stem}.json "
-                                f"--svg {r['svg']}")
-                if r["rc"] != 0:
-                    problems.append(f"{config}: the mission ended with exit {r['rc']} (not complete)")
-            except Failed as e:
-                problems.append(str(e))
+
+        def one(config):
+            r = run_mission(tools["ringlet"], config)
+            commands.append(f"{r['svg']}: ringlet --config {config} --lockstep --report {WORK}/{config.stem}.json "
+                            f"--svg {r['svg']}")
+            return r, f"{config}: the mission ended with exit {r['rc']} (not complete)" if r["rc"] != 0 else None
+
+        missions, problems = for_each_config(runnable, one)
         state["missions"] = missions
         if problems:
             raise Failed("; ".join(problems))
 
     def s_realtime():
         runnable, _ = shipped_missions("firmware/config")
-        runs, problems = [], []
-        for config in runnable:
-            try:
-                runs.append(run_realtime(tools["ringlet"], config))
-                commands.append(f"{WORK}/realtime_{config.stem}.json: ringlet --config {config} --realtime "
-                                f"--duration {REALTIME_SECONDS} --report {WORK}/realtime_{config.stem}.json")
-            except Failed as e:
-                problems.append(str(e))
+
+        def one(config):
+            r = run_realtime(tools["ringlet"], config)
+            commands.append(f"{WORK}/realtime_{config.stem}.json: ringlet --config {config} --realtime "
+                            f"--duration {REALTIME_SECONDS} --report {WORK}/realtime_{config.stem}.json")
+            return r, None
+
+        runs, problems = for_each_config(runnable, one)
         state["realtime"] = runs
         if problems:
             raise Failed("; ".join(problems))
 
-    def s_datasets():
+    def vision_skipped(needs_sets=True):
+        """True (and says so) when --no-vision skips this step; Failed when it needs the datasets and
+        the step that makes them failed."""
         if args.no_vision:
             say("   skipped (--no-vision)")
+            return True
+        if needs_sets and "sets" not in state:
+            raise Failed("no datasets (the step before failed)")
+        return False
+
+    def s_datasets():
+        if vision_skipped(needs_sets=False):
             return
         sets = {"tune": make_dataset(tools["dataset"], TUNE_SET["seed"], TUNE_SET["count"])}
         for t in TEST_SETS:
@@ -428,11 +451,8 @@ def main(argv=None):
             commands.append(f"{WORK}/vision/seed{t['seed']}: ringlet-dataset -n {t['count']} --seed {t['seed']} {flags}")
 
     def s_overlays():
-        if args.no_vision:
-            say("   skipped (--no-vision)")
+        if vision_skipped():
             return
-        if "sets" not in state:
-            raise Failed("no datasets (the step before failed)")
         folder = state["sets"][TEST_SETS[0]["seed"]]
         open_i, robot_i = pick_overlay_frames(folder, TEST_SETS[0]["count"])
         say(f"   open field: frame {open_i}; a robot close by: frame {robot_i}")
@@ -443,11 +463,8 @@ def main(argv=None):
         state["overlays"] = (open_i, robot_i)
 
     def s_eval():
-        if args.no_vision:
-            say("   skipped (--no-vision)")
+        if vision_skipped():
             return
-        if "sets" not in state:
-            raise Failed("no datasets (the step before failed)")
         evals = []
         for k, t in enumerate(TEST_SETS):
             svg = DOCS / "vision_eval.svg" if k == 0 else None
