@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -76,26 +78,18 @@ TEST(SimWorldParser, HugeFiniteAnglesStayFinite) {
   EXPECT_LE(std::abs(world.lighting.sun_angle), std::numbers::pi);
 }
 
-TEST(SimWorldParser, MissingFileNamesThePathAndTheReason) {
-  const std::string path = kTestWorlds + "/no-such.world";
-  try {
-    (void)load_world(path);
-    FAIL() << "no exception";
-  } catch (const WorldError& e) {
-    EXPECT_EQ(std::string(e.what()), path + ": cannot read world file: No such file or directory");
-  }
-}
-
-TEST(SimWorldParser, DirectoryIsNotAWorldFile) {
-  try {
-    (void)load_world(kTestWorlds);
-    FAIL() << "no exception";
-  } catch (const WorldError& e) {
-    EXPECT_EQ(std::string(e.what()), kTestWorlds + ": cannot read world file: not a regular file (a directory)");
-  }
-}
-
 // ---------------------------------------------------------------------------------------------
+
+// The message of the WorldError that LOAD throws; none when it returns a world. Nothing half-loaded:
+// the only way out of the parser is a complete World or this exception.
+std::optional<std::string> world_error(const std::function<World()>& load) {
+  try {
+    (void)load();
+  } catch (const WorldError& e) {
+    return e.what();
+  }
+  return std::nullopt;
+}
 
 struct BadWorld {
   const char* name;
@@ -226,15 +220,10 @@ class SimWorldParserRejects : public testing::TestWithParam<BadWorld> {};
 
 TEST_P(SimWorldParserRejects, WithPositionAndReason) {
   const BadWorld& bad = GetParam();
-  try {
-    // Nothing half-loaded: the only way out is a complete World or this exception.
-    (void)parse_world(bad.text, "t.world");
-    FAIL() << "accepted:\n" << bad.text;
-  } catch (const WorldError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.substr(0, bad.position.size()), bad.position) << message;
-    EXPECT_NE(message.find(bad.phrase), std::string::npos) << message;
-  }
+  const std::optional<std::string> message = world_error([&] { return parse_world(bad.text, "t.world"); });
+  ASSERT_TRUE(message.has_value()) << "accepted:\n" << bad.text;
+  EXPECT_EQ(message->substr(0, bad.position.size()), bad.position) << *message;
+  EXPECT_NE(message->find(bad.phrase), std::string::npos) << *message;
 }
 
 INSTANTIATE_TEST_SUITE_P(SimWorldParser, SimWorldParserRejects, testing::ValuesIn(kBadWorlds),
@@ -277,14 +266,35 @@ TEST(SimWorldParser, Version1FilesKeepTheirMeaning) {
   EXPECT_EQ(world.circles[0].height, 0.58);
 }
 
-TEST(SimWorldParser, MessageIsExactlySourceLineMessage) {
-  try {
-    (void)parse_world(kHead + "\n\ncircle 5 7 -1\n", "courtyard.world");
-    FAIL() << "no exception";
-  } catch (const WorldError& e) {
-    EXPECT_STREQ(e.what(), "courtyard.world:7: circle: radius must be > 0, got -1");
-  }
+// Whole messages: a file that cannot be read names its path and the reason; a bad statement's
+// message is exactly "<source>:<line>: <message>".
+struct ExactError {
+  const char* name;
+  std::function<World()> load;
+  std::string message;
+};
+
+const ExactError kExactErrors[] = {
+    {"MissingFileNamesThePathAndTheReason", [] { return load_world(kTestWorlds + "/no-such.world"); },
+     kTestWorlds + "/no-such.world: cannot read world file: No such file or directory"},
+    {"DirectoryIsNotAWorldFile", [] { return load_world(kTestWorlds); },
+     kTestWorlds + ": cannot read world file: not a regular file (a directory)"},
+    {"MessageIsExactlySourceLineMessage", [] { return parse_world(kHead + "\n\ncircle 5 7 -1\n", "courtyard.world"); },
+     "courtyard.world:7: circle: radius must be > 0, got -1"},
+};
+
+void PrintTo(const ExactError& exact, std::ostream* out) { *out << exact.name; }
+
+class SimWorldParserExactError : public testing::TestWithParam<ExactError> {};
+
+TEST_P(SimWorldParserExactError, Is) {
+  const std::optional<std::string> message = world_error(GetParam().load);
+  ASSERT_TRUE(message.has_value()) << "no exception";
+  EXPECT_EQ(*message, GetParam().message);
 }
+
+INSTANTIATE_TEST_SUITE_P(SimWorldParser, SimWorldParserExactError, testing::ValuesIn(kExactErrors),
+                         [](const testing::TestParamInfo<ExactError>& param) { return std::string(param.param.name); });
 
 }  // namespace
 }  // namespace ringlet::sim_hal
