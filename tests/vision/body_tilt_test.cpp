@@ -32,7 +32,9 @@ TEST(HorizonBody, ForwardLeanMovesTheHorizonLikeHeadPitch) {
       EXPECT_NEAR(horizon_v(k, tilted, u), k.cy - k.fy * std::tan(0.25 + lean), 1e-9);
     }
     // Leaning forward raises the horizon in the picture (the camera looks further down).
-    if (lean > 0.0) EXPECT_LT(horizon_v(k, tilted, 320.0), horizon_v(k, upright, 320.0));
+    if (lean > 0.0) {
+      EXPECT_LT(horizon_v(k, tilted, 320.0), horizon_v(k, upright, 320.0));
+    }
     std::vector<int> a(640), b(640);
     EXPECT_EQ(horizon_rows(k, tilted, 2, a), horizon_rows(k, more_head, 2, b));
     EXPECT_EQ(a, b);
@@ -54,7 +56,9 @@ TEST(HorizonBody, RollSlantsTheHorizonByTheRollAngle) {
     const double pitched_slope = (horizon_v(k, pitched, 639.0) - horizon_v(k, pitched, 0.0)) / 639.0;
     EXPECT_NEAR(std::atan(-pitched_slope), roll, hal::deg_to_rad(1.0)) << roll_deg;
     // Leaning right: the right end is higher in the picture (smaller v).
-    if (roll > 0.0) EXPECT_LT(horizon_v(k, pitched, 639.0), horizon_v(k, pitched, 0.0));
+    if (roll > 0.0) {
+      EXPECT_LT(horizon_v(k, pitched, 639.0), horizon_v(k, pitched, 0.0));
+    }
   }
 }
 

@@ -205,7 +205,7 @@ TEST_F(VisionCli, NonFiniteOrOutOfRangeCameraFlagsAreBadInput) {
       {"--body-roll 25", "--body-roll: must be within [-20, 20] deg"},
       {"--body-roll nan", "--body-roll: must be a finite number, got nan"},
       {"--body-pitch inf", "--body-pitch: must be a finite number, got inf"},
-      {"--repeat 0", "--repeat: Value 0 not in range [1 - 100000]"},
+      {"--repeat 0", "--repeat: Value 0 not in range 1 to 100000"},
   };
   for (const auto& [flags, message] : cases) {
     const ToolRun r = run(png + " " + flags, true);
