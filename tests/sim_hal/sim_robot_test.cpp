@@ -302,7 +302,7 @@ const BadConfig kBadConfigs[] = {
     {"laser_sigma", [](SimConfig& c) { c.laser_sigma = -1.0; }, "sim.laser_sigma"},
     {"head_max_rate", [](SimConfig& c) { c.head_max_rate = 0.0; }, "sim.head_max_rate"},
     {"battery_volts", [](SimConfig& c) { c.battery_volts = -1.0; }, "sim.battery_volts"},
-    {"body_pitch", [](SimConfig& c) { c.body.pitch = 0.6; }, "sim.body.pitch must be finite and within ±0.523599 rad (30°), got 0.6"},
+    {"body_pitch", [](SimConfig& c) { c.body.pitch = 0.6; }, "sim.body.pitch must be finite and within ±0.5235987755982988 rad (30°), got 0.6"},
     {"body_roll", [](SimConfig& c) { c.body.roll = kNan; }, "sim.body.roll must be finite"},
     {"body_sway", [](SimConfig& c) { c.body.roll = -0.3; c.body.sway_roll = 0.1; }, "sim.body.roll + |sway_roll|"},
     {"body_sway_period", [](SimConfig& c) { c.body.sway_period = 0.0; }, "sim.body.sway_period must be in [0.05, 60] s"},

@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include <iomanip>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -90,7 +91,8 @@ int run(const Options& o) {
     for (std::size_t s = 0; s < kStageCount; ++s) per_stage[tools::stage_name(s)] = tools::to_json(tools::time_stats(stages[s]));
     out["timing"] = {{"repeat", o.repeat}, {"total_ms", tools::to_json(total)}, {"wall_ms", tools::to_json(wall_stats)},
                      {"stages_ms", per_stage}};
-    std::cerr << "ringlet-vision: " << o.repeat << " runs, thread CPU ms per frame: min " << total.min_ms << " median "
+    std::cerr << std::fixed << std::setprecision(3) << "ringlet-vision: " << o.repeat
+              << " runs, thread CPU ms per frame: min " << total.min_ms << " median "
               << total.median_ms << " p99 " << total.p99_ms << " max " << total.max_ms << " (wall median "
               << wall_stats.median_ms << ")\n";
   }
