@@ -1,4 +1,5 @@
-// The camera model as rotations and transforms: the head's rotation is Rz(yaw)·Ry(pitch), the
+// The camera model as rotations and transforms: the torso's tilt is Ry(pitch)·Rx(roll) about the
+// ground point under the robot, the head's rotation on it is Rz(yaw)·Ry(pitch), the
 // camera's axes are a fixed permutation of the head's, and a CameraPose stores the columns of the
 // camera→robot rotation (its `axes`) with the camera's position. Eigen does the products; the
 // types are fixed-size (3×3, 3-vectors) and live on the stack, so nothing here allocates.
@@ -33,6 +34,15 @@ Eigen::Matrix3d rotation_y(double angle) noexcept {
   return r;
 }
 
+Eigen::Matrix3d rotation_x(double angle) noexcept {
+  const double c = std::cos(angle), s = std::sin(angle);
+  Eigen::Matrix3d r;
+  r << 1.0, 0.0, 0.0,  //
+      0.0, c, -s,  //
+      0.0, s, c;
+  return r;
+}
+
 // Camera axes in the head frame, as columns: right = −head y, down = −head z, forward = head x.
 Eigen::Matrix3d camera_in_head() noexcept {
   Eigen::Matrix3d p;
@@ -62,15 +72,24 @@ CameraIntrinsics CameraIntrinsics::from_fov(int width, int height, double hfov_d
   return k;
 }
 
-CameraPose CameraPose::from_head(const CameraMount& mount, const HeadJoints& head) noexcept {
-  // Head axes in the robot frame: R = Rz(yaw) · Ry(pitch); a positive rotation about y tips the
-  // x axis down, which is what a positive (downward) pitch does.
-  const Eigen::Matrix3d head_to_robot = rotation_z(head.yaw) * rotation_y(head.pitch);
+CameraPose CameraPose::from_body(const CameraMount& mount, const BodyTilt& body, const HeadJoints& head) noexcept {
+  // Head axes in the torso frame: Rz(yaw) · Ry(pitch); a positive rotation about y tips the x axis
+  // down, which is what a positive (downward) pitch does, and a forward-leaning torso likewise.
+  const Eigen::Matrix3d head_to_torso = rotation_z(head.yaw) * rotation_y(head.pitch);
   const Eigen::Vector3d pivot{0.0, 0.0, mount.pivot_height};
   const Eigen::Vector3d camera_in_head_frame{mount.forward, 0.0, mount.up};
+  Eigen::Matrix3d head_to_robot = head_to_torso;
+  Eigen::Vector3d position = pivot + head_to_torso * camera_in_head_frame;
+  // An upright torso is the identity: skipped rather than multiplied by, so that the upright pose
+  // is bit for bit what it was before the torso entered the chain (golden runs depend on it).
+  if (body.pitch != 0.0 || body.roll != 0.0) {
+    const Eigen::Matrix3d torso_to_robot = rotation_y(body.pitch) * rotation_x(body.roll);
+    head_to_robot = torso_to_robot * head_to_torso;
+    position = torso_to_robot * position;  // the torso turns about the robot frame's origin
+  }
   const Eigen::Matrix3d axes = head_to_robot * camera_in_head();
   CameraPose pose;
-  pose.position = to_vec3(pivot + head_to_robot * camera_in_head_frame);
+  pose.position = to_vec3(position);
   for (int i = 0; i < 3; ++i) pose.axes[static_cast<std::size_t>(i)] = to_vec3(axes.col(i));
   return pose;
 }

@@ -120,16 +120,17 @@ void CameraRenderer::build_grid() {
   g.first.push_back(static_cast<std::uint32_t>(g.items.size()));
 }
 
-void CameraRenderer::render(const hal::Pose2& pose, const hal::HeadJoints& head) noexcept {
+void CameraRenderer::render(const hal::Pose2& pose, const hal::CameraPosture& posture) noexcept {
   pose_ = pose;
-  const hal::CameraPose cam = hal::CameraPose::from_head(spec_.mount, head);
+  const hal::CameraPose cam = hal::CameraPose::from_posture(spec_.mount, posture);
   const double s = std::sin(pose.theta);
   const double c = std::cos(pose.theta);
   const Vec3 offset = detail::robot_to_world_direction(s, c, cam.position);
   origin_ = {pose.x + offset.x, pose.y + offset.y, offset.z};
   for (std::size_t i = 0; i < 3; ++i) axes_[i] = detail::robot_to_world_direction(s, c, cam.axes[i]);
   truth_.pose = pose;
-  truth_.head = head;
+  truth_.head = posture.head;
+  truth_.body = posture.body;
   compute_obstacle_boxes();
   render_pixels();
   compute_truth();

@@ -75,7 +75,7 @@ int SimCamera::free_slot() const noexcept {
 }
 
 void SimCamera::on_step(std::uint64_t step, hal::Nanos time, const hal::Pose2& pose,
-                        const hal::HeadJoints& head) noexcept {
+                        const hal::CameraPosture& posture) noexcept {
   if (step % static_cast<std::uint64_t>(config_.every_n_frames) != 0) return;
   const std::lock_guard slots_lock(slots_mutex_);
   if (in_flight_ >= 0) {
@@ -96,7 +96,7 @@ void SimCamera::on_step(std::uint64_t step, hal::Nanos time, const hal::Pose2& p
   in_flight_ = slot;
   {
     const std::lock_guard lock(job_mutex_);
-    job_ = Job{slot, pose, head};
+    job_ = Job{slot, pose, posture};
     job_pending_ = true;
   }
   job_cv_.notify_all();
@@ -112,7 +112,7 @@ void SimCamera::render_loop() noexcept {
       job = job_;
       job_pending_ = false;
     }
-    renderer_.render(job.pose, job.head);
+    renderer_.render(job.pose, job.posture);
     Slot& s = slots_[static_cast<std::size_t>(job.slot)];
     const auto bgr = renderer_.bgr();
     if (config_.format == hal::PixelFormat::kYuyv) {

@@ -47,6 +47,27 @@ void validate(const SimConfig& config) {
   require_non_negative("laser_sigma", config.laser_sigma);
   require_positive("head_max_rate", config.head_max_rate);
   require_non_negative("battery_volts", config.battery_volts);
+  // Past these (hal::BodyTiltRange) the robot would be falling, not standing or walking; a lean
+  // plus its sway must stay inside them too.
+  const auto require_tilt = [](std::string_view field, double value, double max_deg) {
+    const double max = max_deg * std::numbers::pi / 180.0;
+    if (!(std::isfinite(value) && std::fabs(value) <= max)) {
+      reject(field, "finite and within ±" + detail::format_number(max) + " rad (" + detail::format_number(max_deg) + "°)",
+             detail::format_number(value));
+    }
+  };
+  using Range = hal::BodyTiltRange;
+  require_tilt("body.pitch", config.body.pitch, Range::kMaxPitchDeg);
+  require_tilt("body.roll", config.body.roll, Range::kMaxRollDeg);
+  require_tilt("body.sway_pitch", config.body.sway_pitch, Range::kMaxPitchDeg);
+  require_tilt("body.sway_roll", config.body.sway_roll, Range::kMaxRollDeg);
+  require_tilt("body.pitch + |sway_pitch|", std::fabs(config.body.pitch) + std::fabs(config.body.sway_pitch),
+               Range::kMaxPitchDeg);
+  require_tilt("body.roll + |sway_roll|", std::fabs(config.body.roll) + std::fabs(config.body.sway_roll),
+               Range::kMaxRollDeg);
+  if (!(std::isfinite(config.body.sway_period) && config.body.sway_period >= 0.05 && config.body.sway_period <= 60.0)) {
+    reject("body.sway_period", "in [0.05, 60] s", detail::format_number(config.body.sway_period));
+  }
   if (config.camera.enabled) validate(config.camera);
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -30,11 +31,22 @@ double approach(double current, double target, double max_change) noexcept {
   return current + std::clamp(target - current, -max_change, max_change);
 }
 
+/// The sway's starting phase in [0, 2π), from the seed by SplitMix64's finaliser: deterministic
+/// on every host and independent of the noise RNG's stream.
+double sway_phase(std::uint64_t seed) noexcept {
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ULL;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  z ^= z >> 31;
+  return 2.0 * std::numbers::pi * static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
 }  // namespace
 
 SimRobot::SimRobot(World world, const SimConfig& config)
-    : world_(std::move(world)), config_(config), rng_(config.seed) {
+    : world_(std::move(world)), config_(config), rng_(config.seed), sway_phase_(sway_phase(config.seed)) {
   validate(config_);
+  body_ = {config_.body.pitch, config_.body.roll};
   state_.pose = world_.start;
   if (disc_collides(world_, Vec2{state_.pose.x, state_.pose.y}, config_.robot_radius)) {
     throw std::invalid_argument("start pose (" + detail::format_number(state_.pose.x) + ", " +
@@ -51,7 +63,7 @@ const FrameTruth* SimRobot::camera_truth() const noexcept { return camera_ ? cam
 bool SimRobot::read(hal::SensorFrame& out) noexcept {
   step();
   // The camera sees the true state at the end of the step (before any measurement noise).
-  if (camera_) camera_->on_step(steps_, time_, state_.pose, head_);
+  if (camera_) camera_->on_step(steps_, time_, state_.pose, hal::CameraPosture{body_, head_});
   measure(out);
   return true;
 }
@@ -115,6 +127,16 @@ void SimRobot::step() noexcept {
 
   time_ += config_.period;
   ++steps_;
+
+  // The torso: its static lean, and a sway that grows with the speed. Skipped when there is no
+  // sway, so that an upright robot's tilt stays exactly the configured constants.
+  const SimBodyTilt& b = config_.body;
+  if (b.sway_pitch != 0.0 || b.sway_roll != 0.0) {
+    const double speed = std::min(1.0, std::fabs(state_.velocity) / config_.limits.max_speed);
+    const double phase = sway_phase_ + 2.0 * std::numbers::pi * hal::to_seconds(time_) / b.sway_period;
+    body_.pitch = b.pitch + b.sway_pitch * speed * std::sin(2.0 * phase);
+    body_.roll = b.roll + b.sway_roll * speed * std::sin(phase);
+  }
 }
 
 void SimRobot::measure(hal::SensorFrame& out) noexcept {
@@ -137,6 +159,10 @@ void SimRobot::measure(hal::SensorFrame& out) noexcept {
   out.odometry.curvature = state_.curvature;
 
   out.head = head_;
+
+  out.body.stamp = time_;
+  out.body.tilt = body_;
+  out.body.valid = true;
 
   out.power.battery_volts = std::max(0.0, config_.battery_volts - kBatteryVoltsPerMetre * distance_);
   out.power.bus_volts = std::max(0.0, out.power.battery_volts - kBusDropVolts);

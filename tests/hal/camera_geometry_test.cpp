@@ -1,5 +1,5 @@
 // The head camera's geometry against hand-computed cases: projection, its inverse onto the ground,
-// head yaw and pitch, the mount offsets, the horizon.
+// head yaw and pitch, the mount offsets, the horizon; the torso's tilt in the chain.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -119,6 +119,125 @@ TEST(CameraGeometry, NothingAtOrAboveTheHorizonMeetsTheGround) {
   EXPECT_FALSE(pixel_to_ground(k, pose, {320.0, 240.0}));  // the optical axis is level
   EXPECT_FALSE(pixel_to_ground(k, pose, {100.0, 10.0}));   // above it
   EXPECT_TRUE(pixel_to_ground(k, pose, {100.0, 300.0}));
+}
+
+// ---- the torso's tilt (hal::BodyTilt) --------------------------------------------------------
+
+double dot(const Vec3& p, const Vec3& q) { return p.x * q.x + p.y * q.y + p.z * q.z; }
+
+TEST(CameraGeometryBody, UprightBodyIsFromHeadBitForBit) {
+  const CameraMount mount{};
+  const HeadJoints head{0.4, 0.3};
+  const auto a = CameraPose::from_head(mount, head);
+  const auto b = CameraPose::from_body(mount, BodyTilt{0.0, 0.0}, head);
+  EXPECT_EQ(a.position.x, b.position.x);
+  EXPECT_EQ(a.position.y, b.position.y);
+  EXPECT_EQ(a.position.z, b.position.z);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(a.axes[i].x, b.axes[i].x);
+    EXPECT_EQ(a.axes[i].y, b.axes[i].y);
+    EXPECT_EQ(a.axes[i].z, b.axes[i].z);
+  }
+}
+
+// Leaning forward by 5° with the head straight ahead turns the camera exactly as 5° more head
+// pitch does; only the pivot moves (forward and down, on a circle about the ground point).
+TEST(CameraGeometryBody, BodyPitchAddsToHeadPitchWhenYawIsZero) {
+  const CameraMount mount{};
+  const double lean = deg_to_rad(5.0);
+  const auto tilted = CameraPose::from_body(mount, {lean, 0.0}, {0.0, 0.2});
+  const auto more_head = CameraPose::from_head(mount, {0.0, 0.2 + lean});
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(tilted.axes[i].x, more_head.axes[i].x, 1e-15);
+    EXPECT_NEAR(tilted.axes[i].y, more_head.axes[i].y, 1e-15);
+    EXPECT_NEAR(tilted.axes[i].z, more_head.axes[i].z, 1e-15);
+  }
+  // The camera position is the upright one turned by 5° about the y axis through the origin.
+  const auto upright = CameraPose::from_head(mount, {0.0, 0.2});
+  const double c = std::cos(lean), s = std::sin(lean);
+  EXPECT_NEAR(tilted.position.x, c * upright.position.x + s * upright.position.z, 1e-15);
+  EXPECT_NEAR(tilted.position.y, 0.0, 1e-15);
+  EXPECT_NEAR(tilted.position.z, -s * upright.position.x + c * upright.position.z, 1e-15);
+  // Leaning forward brings the camera forward and (slightly) down.
+  EXPECT_GT(tilted.position.x, upright.position.x);
+  EXPECT_LT(tilted.position.z, upright.position.z);
+}
+
+// Positive roll leans the torso to its right: a camera at the pivot moves to the right (−y) and
+// its right axis dips by the roll angle, while the optical axis stays level and straight ahead.
+TEST(CameraGeometryBody, RollLeansToTheRightAndTurnsTheCameraAboutItsAxis) {
+  const double roll = deg_to_rad(10.0);
+  const auto pose = CameraPose::from_body(kBare, {0.0, roll}, {0.0, 0.0});
+  EXPECT_NEAR(pose.position.y, -0.5 * std::sin(roll), 1e-15);
+  EXPECT_NEAR(pose.position.z, 0.5 * std::cos(roll), 1e-15);
+  // The camera's right axis points down at the roll angle.
+  EXPECT_NEAR(pose.axes[0].z, -std::sin(roll), 1e-15);
+  // The optical axis stays level and straight ahead.
+  EXPECT_NEAR(pose.axes[2].x, 1.0, 1e-15);
+  EXPECT_NEAR(pose.axes[2].z, 0.0, 1e-15);
+}
+
+// Pixel → ground → pixel is the identity with any tilt, and the ground point really lies on the
+// viewing ray (checked against the upright camera, which is another route to the same world).
+TEST(CameraGeometryBody, PixelToGroundRoundTripWithTilt) {
+  const auto k = CameraIntrinsics::nao();
+  const CameraMount mount{};
+  for (const BodyTilt body : {BodyTilt{deg_to_rad(7.0), 0.0}, BodyTilt{0.0, deg_to_rad(-6.0)},
+                              BodyTilt{deg_to_rad(-4.0), deg_to_rad(3.0)}}) {
+    for (const HeadJoints head : {HeadJoints{0.0, 0.35}, HeadJoints{0.6, 0.2}, HeadJoints{-0.9, 0.45}}) {
+      const auto pose = CameraPose::from_body(mount, body, head);
+      for (const Pixel px : {Pixel{320.5, 400.5}, Pixel{10.5, 470.5}, Pixel{630.5, 300.5}}) {
+        const auto g = pixel_to_ground(k, pose, px);
+        ASSERT_TRUE(g) << body.pitch << " " << body.roll << " " << head.yaw << " " << head.pitch;
+        const auto back = project(k, pose, {g->x, g->y, 0.0});
+        ASSERT_TRUE(back);
+        EXPECT_NEAR(back->u, px.u, 1e-8);
+        EXPECT_NEAR(back->v, px.v, 1e-8);
+      }
+    }
+  }
+}
+
+// A ground point seen by a tilted robot: its distance differs from what the upright model says,
+// which is the whole point (5° of lean at 2 m is about 0.5 m of error).
+TEST(CameraGeometryBody, IgnoringTheLeanMisplacesGroundPoints) {
+  const auto k = CameraIntrinsics::nao();
+  const CameraMount mount{};
+  const HeadJoints head{0.0, 0.3};
+  const auto tilted = CameraPose::from_body(mount, {deg_to_rad(5.0), 0.0}, head);
+  const Vec3 truth{2.0, 0.0, 0.0};
+  const auto px = project(k, tilted, truth);
+  ASSERT_TRUE(px);
+  const auto seen = pixel_to_ground(k, tilted, *px);
+  ASSERT_TRUE(seen);
+  EXPECT_NEAR(seen->x, 2.0, 1e-9);
+  const auto naive = pixel_to_ground(k, CameraPose::from_head(mount, head), *px);
+  ASSERT_TRUE(naive);
+  EXPECT_GT(naive->x - 2.0, 0.3);  // the upright model puts it much further away
+}
+
+TEST(CameraGeometryBody, TiltedAxesStayARightHandedRotation) {
+  for (const BodyTilt body : {BodyTilt{0.3, -0.2}, BodyTilt{-0.5, 0.35}}) {
+    const auto pose = CameraPose::from_body(CameraMount{}, body, {0.7, -0.3});
+    const auto& a = pose.axes;
+    for (std::size_t i = 0; i < 3; ++i) {
+      for (std::size_t j = 0; j < 3; ++j) EXPECT_NEAR(dot(a[i], a[j]), i == j ? 1.0 : 0.0, 1e-14);
+    }
+    const Vec3 cross{a[0].y * a[1].z - a[0].z * a[1].y, a[0].z * a[1].x - a[0].x * a[1].z,
+                     a[0].x * a[1].y - a[0].y * a[1].x};
+    EXPECT_NEAR(cross.x, a[2].x, 1e-14);
+    EXPECT_NEAR(cross.y, a[2].y, 1e-14);
+    EXPECT_NEAR(cross.z, a[2].z, 1e-14);
+  }
+}
+
+TEST(InertialState, InvalidReadingMeansUpright) {
+  InertialState imu;
+  imu.tilt = {0.1, 0.2};
+  EXPECT_EQ(imu.tilt_or_upright().pitch, 0.0);
+  imu.valid = true;
+  EXPECT_EQ(imu.tilt_or_upright().pitch, 0.1);
+  EXPECT_EQ(imu.tilt_or_upright().roll, 0.2);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@ inline SensorFrame scripted_frame(std::uint64_t i, std::uint16_t beams) {
   f.pose = PoseMeasurement{f.stamp, Pose2{0.1 * d, -0.05 * d, 0.001 * d - 1.0}, i % 7 != 3};
   f.odometry = WheelOdometry{f.stamp, 0.01 * d, 0.5 + 0.001 * d, -0.25 + 1e-4 * d};
   f.head = HeadJoints{0.2 - 0.003 * d, 0.1 + 0.002 * d};
+  f.body = InertialState{f.stamp - Nanos{500}, BodyTilt{0.05 - 0.001 * d, -0.02 + 0.0005 * d}, i % 5 != 4};
   f.power = PowerState{12.6 - 1e-4 * d, 5.0 + 1e-5 * d};
   f.laser.stamp = f.stamp - Nanos{1000};
   f.laser.beam_count = beams;

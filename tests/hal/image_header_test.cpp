@@ -1,14 +1,18 @@
 // The image header probe: PNG and JPEG sizes read before decoding, and everything else refused
-// with a reason (an oversized header must never reach a decoder).
+// with a reason (an oversized header must never reach a decoder); grey pictures recognised; a file
+// cut short recognised by its missing end (JPEG's EOI marker, PNG's IEND chunk).
 #include "ringlet/hal/image_header.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace {
 
 using ringlet::hal::ImageFormat;
+using ringlet::hal::image_truncation;
 using ringlet::hal::probe_image;
 
 std::vector<std::uint8_t> bytes(std::initializer_list<std::uint8_t> b) { return b; }
@@ -88,6 +92,85 @@ TEST(ImageHeader, RefusesWhatIsNotPngOrJpeg) {
   EXPECT_EQ(probe_image({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()}).error,
             "not a PNG or JPEG image");
   EXPECT_EQ(probe_image(bytes({'B', 'M', 0, 0, 0, 0})).error, "not a PNG or JPEG image");  // BMP: not accepted
+}
+
+// ---- channels and completeness -----------------------------------------------------------------
+
+/// A whole (tiny, structurally complete) JPEG: SOI, APP1 holding an embedded thumbnail's EOI,
+/// SOF0 with `components`, DHT, SOS, entropy-coded data with a stuffed 0xFF 0x00 and a restart
+/// marker, a second scan (progressive-like), fill bytes, EOI.
+std::vector<std::uint8_t> whole_jpeg(std::uint8_t components) {
+  std::vector<std::uint8_t> b{0xFF, 0xD8,                                      // SOI
+                              0xFF, 0xE1, 0x00, 0x08, 'E', 'x', 0xFF, 0xD8, 0xFF, 0xD9,  // APP1, a thumbnail's SOI/EOI
+                              0xFF, 0xC0, 0x00, static_cast<std::uint8_t>(8 + 3 * components), 0x08, 0x00, 0x10, 0x00,
+                              0x10, components};
+  for (std::uint8_t c = 0; c < components; ++c) {
+    b.insert(b.end(), {static_cast<std::uint8_t>(c + 1), 0x11, 0x00});
+  }
+  b.insert(b.end(), {0xFF, 0xC4, 0x00, 0x04, 0x00, 0x00,                          // DHT (a stand-in)
+                     0xFF, 0xDA, 0x00, 0x08, 0x01, 0x01, 0x00, 0x00, 0x3F, 0x00,  // SOS
+                     0x12, 0xFF, 0x00, 0x34, 0xFF, 0xD0, 0x56, 0xFF, 0x00, 0x78,  // data, stuffing, RST0
+                     0xFF, 0xDA, 0x00, 0x08, 0x01, 0x01, 0x00, 0x00, 0x3F, 0x00,  // a second scan
+                     0x9A, 0xBC, 0xFF, 0xFF, 0xD9});                               // data, fill, EOI
+  return b;
+}
+
+std::vector<std::uint8_t> whole_png(std::uint8_t colour_type) {
+  auto b = png_header(16, 16);
+  b[25] = colour_type;
+  // png_header ends with IHDR's CRC; then an IDAT of 3 bytes and IEND.
+  b.insert(b.end(), {0, 0, 0, 3, 'I', 'D', 'A', 'T', 1, 2, 3, 0, 0, 0, 0, 0, 0, 0, 0, 'I', 'E', 'N', 'D', 0, 0, 0, 0});
+  return b;
+}
+
+TEST(ImageHeader, KnowsAGreyPicture) {
+  const auto grey_jpeg = probe_image(whole_jpeg(1));
+  ASSERT_TRUE(grey_jpeg.ok()) << grey_jpeg.error;
+  EXPECT_EQ(grey_jpeg.header->channels, 1);
+  EXPECT_TRUE(grey_jpeg.header->grayscale());
+  const auto colour_jpeg = probe_image(whole_jpeg(3));
+  ASSERT_TRUE(colour_jpeg.ok());
+  EXPECT_EQ(colour_jpeg.header->channels, 3);
+  EXPECT_FALSE(colour_jpeg.header->grayscale());
+  const std::pair<std::uint8_t, int> png_types[] = {{0, 1}, {2, 3}, {3, 3}, {4, 2}, {6, 4}};
+  for (const auto& [type, channels] : png_types) {
+    const auto p = probe_image(whole_png(type));
+    ASSERT_TRUE(p.ok());
+    EXPECT_EQ(p.header->channels, channels) << int{type};
+    EXPECT_EQ(p.header->grayscale(), channels <= 2) << int{type};
+  }
+}
+
+TEST(ImageHeader, AWholeFileIsNotTruncatedEvenWithBytesAfterItsEnd) {
+  EXPECT_EQ(image_truncation(whole_jpeg(3), ImageFormat::kJpeg), "");
+  EXPECT_EQ(image_truncation(whole_png(2), ImageFormat::kPng), "");
+  auto jpeg = whole_jpeg(3);
+  jpeg.insert(jpeg.end(), {0, 0, 0x42});  // padding some cameras append
+  EXPECT_EQ(image_truncation(jpeg, ImageFormat::kJpeg), "");
+}
+
+// Cut at every byte, the file is truncated: the thumbnail's EOI inside APP1, the stuffed 0xFF 0x00,
+// the restart marker and the fill bytes never pass for the end.
+TEST(ImageHeader, AFileCutAtAnyByteIsTruncated) {
+  const auto jpeg = whole_jpeg(3);
+  for (std::size_t n = 3; n < jpeg.size(); ++n) {
+    const std::vector<std::uint8_t> cut(jpeg.begin(), jpeg.begin() + static_cast<std::ptrdiff_t>(n));
+    EXPECT_EQ(image_truncation(cut, ImageFormat::kJpeg), "truncated JPEG (no end-of-image marker)") << n;
+  }
+  const auto png = whole_png(2);
+  for (std::size_t n = 8; n < png.size(); ++n) {
+    const std::vector<std::uint8_t> cut(png.begin(), png.begin() + static_cast<std::ptrdiff_t>(n));
+    EXPECT_EQ(image_truncation(cut, ImageFormat::kPng), "truncated PNG (no IEND chunk)") << n;
+  }
+}
+
+TEST(ImageHeader, AMalformedLengthIsNamed) {
+  auto png = whole_png(2);
+  png[33] = 0xFF;  // IDAT's length: 0xFF000003, above 2^31 - 1
+  EXPECT_EQ(image_truncation(png, ImageFormat::kPng), "bad PNG chunk length 4278190083 at byte 33");
+  auto jpeg = whole_jpeg(3);
+  jpeg[5] = 1;  // APP1's length below 2
+  EXPECT_EQ(image_truncation(jpeg, ImageFormat::kJpeg), "bad JPEG marker segment length 1 at byte 4");
 }
 
 }  // namespace

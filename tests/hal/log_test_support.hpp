@@ -44,6 +44,10 @@ inline void expect_same_frame(const SensorFrame& a, const SensorFrame& b, std::u
   EXPECT_EQ(a.odometry.curvature, b.odometry.curvature);
   EXPECT_EQ(a.head.yaw, b.head.yaw);
   EXPECT_EQ(a.head.pitch, b.head.pitch);
+  EXPECT_EQ(a.body.stamp, b.body.stamp);
+  EXPECT_EQ(a.body.tilt.pitch, b.body.tilt.pitch);
+  EXPECT_EQ(a.body.tilt.roll, b.body.tilt.roll);
+  EXPECT_EQ(a.body.valid, b.body.valid);
   EXPECT_EQ(a.power.battery_volts, b.power.battery_volts);
   EXPECT_EQ(a.power.bus_volts, b.power.bus_volts);
   EXPECT_EQ(a.laser.stamp, b.laser.stamp);

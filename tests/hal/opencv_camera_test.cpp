@@ -180,6 +180,13 @@ TEST(OpenCvCamera, UndecodableFilesAreSkippedCountedAndReported) {
                                   0, 0, 0x9C, 0x40, 0, 0, 0x9C, 0x40, 8, 2, 0, 0, 0};
     std::ofstream(dir.path() / "frame_0001a.png", std::ios::binary).write(reinterpret_cast<const char*>(huge), sizeof huge);
   }
+  {
+    // A JPEG cut short: libjpeg would decode it with grey rows and a warning only.
+    std::vector<std::uint8_t> jpeg;
+    ASSERT_TRUE(cv::imencode(".jpg", frame(1), jpeg));
+    std::ofstream(dir.path() / "frame_0001b.jpg", std::ios::binary)
+        .write(reinterpret_cast<const char*>(jpeg.data()), static_cast<std::streamsize>(jpeg.size() * 3 / 5));
+  }
   std::vector<std::string> warnings;
   std::mutex mutex;
   OpenCvCamera camera({dir.path().string(), 64, 48, 30.0, PixelFormat::kBgr8}, clock, [&](const std::string& w) {
@@ -196,14 +203,15 @@ TEST(OpenCvCamera, UndecodableFilesAreSkippedCountedAndReported) {
   for (int i = 0; i < 1000 && !camera.finished(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   ASSERT_TRUE(camera.finished());
   EXPECT_EQ(camera.error(), "");
-  EXPECT_EQ(camera.undecodable_files(), 2U);
+  EXPECT_EQ(camera.undecodable_files(), 3U);
   const std::lock_guard lock(mutex);
-  ASSERT_EQ(warnings.size(), 3U);
+  ASSERT_EQ(warnings.size(), 4U);
   const std::string folder = dir.path().string() + ": ";
   EXPECT_EQ(warnings[0], folder + "frame_0000a.png: cannot decode image: not a PNG or JPEG image; skipped");
   EXPECT_EQ(warnings[1], folder + "frame_0001a.png: cannot decode image: PNG image is 40000x40000 = 1600000000 "
                                   "pixels, more than the limit of 16777216; skipped");
-  EXPECT_EQ(warnings[2], folder + "replay ended: 2 of 5 image files could not be decoded and were skipped (the "
+  EXPECT_EQ(warnings[2], folder + "frame_0001b.jpg: cannot decode image: truncated JPEG (no end-of-image marker); skipped");
+  EXPECT_EQ(warnings[3], folder + "replay ended: 3 of 6 image files could not be decoded and were skipped (the "
                                   "first: frame_0000a.png: cannot decode image: not a PNG or JPEG image)");
 }
 

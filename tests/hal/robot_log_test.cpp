@@ -136,7 +136,7 @@ TEST(RobotLog, BeamsPastTheCountAreNotLoggedAndReadBackAsZero) {
 TEST(RobotLog, TheBytesAreLittleEndianWhateverTheHost) {
   std::vector<std::uint8_t> out;
   append_header(out, LogHeader{kRobotLogVersion, Nanos{0x0102030405060708}, "n"});
-  const std::vector<std::uint8_t> expected{'R', 'L', 'H', 'A', 'L', 'L', 'O', 'G', 1, 0, 0, 0,
+  const std::vector<std::uint8_t> expected{'R', 'L', 'H', 'A', 'L', 'L', 'O', 'G', 2, 0, 0, 0,
                                            8,   7,   6,   5,   4,   3,   2,   1,   1, 0, 0, 0, 'n'};
   EXPECT_EQ(out, expected);
 }
@@ -162,19 +162,25 @@ constexpr std::size_t kCameraRecord = kBallRecord + kRecordHeaderBytes + kBallPa
 TEST(RobotLog, DamagedLogsAreRefusedNamingWhatAndWhere) {
   const std::vector<Damage> cases{
       {"magic", [](auto& b) { b[0] = 'X'; }, "wrong magic (not a Ringlet HAL log) at byte 0"},
-      {"version", [](auto& b) { put_u32(b, 8, 7); }, "unsupported version 7 (this build reads version 1) at byte 8"},
+      {"version", [](auto& b) { put_u32(b, 8, 7); }, "unsupported version 7 (this build reads version 2) at byte 8"},
       {"period", [](auto& b) { for (int i = 12; i < 20; ++i) b[static_cast<std::size_t>(i)] = 0; },
        "period of 0 ns is not positive at byte 12"},
       {"note", [](auto& b) { put_u32(b, 20, 5000); }, "note of 5000 bytes is longer than the limit of 4096 at byte 20"},
       {"kind", [](auto& b) { b[kFirstRecord] = 9; }, "unknown record kind 9 at byte 51"},
       {"sensor size", [](auto& b) { put_u32(b, kFirstRecord + 1, 100); },
-       "sensor record of 100 bytes is not 149 + 5 per beam for 0 to 721 beams at byte 51"},
-      {"beam count", [](auto& b) { b[kSensorPayload + 122] = 0xD2; },  // 722 = 0x2D2
-       "laser beam_count 722 exceeds 721 at byte 178"},
-      {"beam count vs size", [](auto& b) { b[kSensorPayload + 122] = 0xD0; },  // 720 beams in a 721-beam record
-       "sensor record of 3754 bytes does not match its 720 beams (3749 expected) at byte 51"},
+       "sensor record of 100 bytes is not 174 + 5 per beam for 0 to 721 beams at byte 51"},
+      {"beam count", [](auto& b) { b[kSensorPayload + 147] = 0xD2; },  // 722 = 0x2D2
+       "laser beam_count 722 exceeds 721 at byte 203"},
+      {"beam count vs size", [](auto& b) { b[kSensorPayload + 147] = 0xD0; },  // 720 beams in a 721-beam record
+       "sensor record of 3779 bytes does not match its 720 beams (3774 expected) at byte 51"},
       {"bad bool", [](auto& b) { b[kSensorPayload + 8] = 2; }, "sensor record: ok is 2, not 0 or 1 at byte 64"},
       {"index", [](auto& b) { b[kSensorPayload] = 4; }, "sensor record index 4, expected 0 at byte 51"},
+      // The inertial unit's valid flag: index 8, ok 1, stamp 8, pose 33, odometry 32, head 16, then
+      // body stamp 8, pitch 8, roll 8.
+      {"body valid", [](auto& b) { b[kSensorPayload + 122] = 3; }, "sensor record: body.valid is 3, not 0 or 1 at byte 178"},
+      {"version 1", [](auto& b) { put_u32(b, 8, 1); },
+       "unsupported version 1 (this build reads version 2; version 1 logs have no torso tilt, record the run again) "
+       "at byte 8"},
       {"ball tag", [](auto& b) { b[kBallRecord + kRecordHeaderBytes] = 0; },
        "ball record tagged with read 0, expected 1 at byte"},
       {"ball size", [](auto& b) { put_u32(b, kBallRecord + 1, 35); }, "ball record of 35 bytes, expected 34 at byte"},

@@ -1,7 +1,9 @@
 // SimRobot: lockstep timing, determinism, collisions, the safe state, head, power and validate().
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -9,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "ringlet/sim_hal/sim_robot.hpp"
 #include "sim_test_support.hpp"
@@ -299,6 +302,10 @@ const BadConfig kBadConfigs[] = {
     {"laser_sigma", [](SimConfig& c) { c.laser_sigma = -1.0; }, "sim.laser_sigma"},
     {"head_max_rate", [](SimConfig& c) { c.head_max_rate = 0.0; }, "sim.head_max_rate"},
     {"battery_volts", [](SimConfig& c) { c.battery_volts = -1.0; }, "sim.battery_volts"},
+    {"body_pitch", [](SimConfig& c) { c.body.pitch = 0.6; }, "sim.body.pitch must be finite and within ±0.5235987755982988 rad (30°), got 0.6"},
+    {"body_roll", [](SimConfig& c) { c.body.roll = kNan; }, "sim.body.roll must be finite"},
+    {"body_sway", [](SimConfig& c) { c.body.roll = -0.3; c.body.sway_roll = 0.1; }, "sim.body.roll + |sway_roll|"},
+    {"body_sway_period", [](SimConfig& c) { c.body.sway_period = 0.0; }, "sim.body.sway_period must be in [0.05, 60] s"},
 };
 
 void PrintTo(const BadConfig& bad, std::ostream* out) { *out << bad.name; }
@@ -327,6 +334,115 @@ TEST(SimValidate, DefaultsAndEdgesAreAccepted) {
   config.laser_fov = 2.0 * std::numbers::pi;
   config.gps_sigma_xy = 0.0;
   EXPECT_NO_THROW(validate(config));
+}
+
+// ---- the torso's tilt (inertial unit) ----------------------------------------------------------
+
+TEST(SimRobotBody, UprightByDefaultAndTheStaticLeanIsReported) {
+  hal::SensorFrame frame;
+  SimRobot upright(box_world(10.0, 10.0, {5.0, 5.0, 0.0}), SimConfig{});
+  frame = run(upright, drive(1.0), 50);
+  EXPECT_TRUE(frame.body.valid);
+  EXPECT_EQ(frame.body.stamp, frame.stamp);
+  EXPECT_EQ(frame.body.tilt.pitch, 0.0);
+  EXPECT_EQ(frame.body.tilt.roll, 0.0);
+
+  SimConfig config;
+  config.body.pitch = 0.08;
+  config.body.roll = -0.03;
+  SimRobot leaning(box_world(10.0, 10.0, {5.0, 5.0, 0.0}), config);
+  frame = run(leaning, drive(1.0), 50);
+  EXPECT_EQ(frame.body.tilt.pitch, 0.08);
+  EXPECT_EQ(frame.body.tilt.roll, -0.03);
+}
+
+// The sway: none standing still, up to its amplitude at full speed, the same for the same seed,
+// shifted in phase for another seed.
+TEST(SimRobotBody, SwayGrowsWithSpeedAndIsSeeded) {
+  SimConfig config;
+  config.body.pitch = 0.05;
+  config.body.sway_pitch = 0.02;
+  config.body.sway_roll = 0.04;
+  config.body.sway_period = 0.5;
+  const auto trace = [&](std::uint64_t seed, double velocity) {
+    SimConfig c = config;
+    c.seed = seed;
+    SimRobot robot(box_world(40.0, 40.0, {20.0, 2.0, 0.0}), c);
+    std::vector<hal::BodyTilt> tilts;
+    hal::SensorFrame frame;
+    for (int i = 0; i < 300; ++i) {
+      robot.actuators().write(drive(velocity));
+      robot.sensors().read(frame);
+      tilts.push_back(frame.body.tilt);
+    }
+    return tilts;
+  };
+  const auto still = trace(1, 0.0);
+  for (const auto& t : still) {
+    EXPECT_EQ(t.pitch, 0.05);
+    EXPECT_EQ(t.roll, 0.0);
+  }
+  const auto a = trace(1, 1.0);
+  double max_roll = 0.0, max_pitch_sway = 0.0;
+  for (std::size_t i = 150; i < a.size(); ++i) {  // at full speed (1 m/s after 1 s)
+    max_roll = std::max(max_roll, std::fabs(a[i].roll));
+    max_pitch_sway = std::max(max_pitch_sway, std::fabs(a[i].pitch - 0.05));
+  }
+  EXPECT_LE(max_roll, 0.04 + 1e-12);
+  EXPECT_GT(max_roll, 0.039);  // a 0.5 s cycle sampled every 10 ms comes close to its peak
+  EXPECT_LE(max_pitch_sway, 0.02 + 1e-12);
+  EXPECT_GT(max_pitch_sway, 0.019);
+  const auto again = trace(1, 1.0);
+  const auto other = trace(2, 1.0);
+  bool same = true, differs = false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    same = same && a[i].pitch == again[i].pitch && a[i].roll == again[i].roll;
+    differs = differs || a[i].roll != other[i].roll;
+  }
+  EXPECT_TRUE(same);
+  EXPECT_TRUE(differs);
+}
+
+// What the camera renders is the tilted view: the frame equals a renderer's picture for the
+// reported torso tilt and head joints, and not the upright picture.
+TEST(SimRobotBody, TheCameraRendersWithTheReportedTilt) {
+  const World world = load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world");
+  SimConfig config;
+  config.camera.enabled = true;
+  config.camera.format = hal::PixelFormat::kBgr8;
+  config.body.pitch = hal::deg_to_rad(6.0);
+  config.body.roll = hal::deg_to_rad(-4.0);
+  config.seed = 5;
+  SimRobot robot(world, config);
+  hal::ActuatorCommand cmd;
+  cmd.head = {0.2, 0.3};
+  std::vector<hal::SensorFrame> frames(1);
+  std::vector<hal::Pose2> poses(1);
+  hal::FrameView view;
+  bool delivered = false;
+  for (int step = 1; step <= 6 && !delivered; ++step) {
+    robot.actuators().write(cmd);
+    hal::SensorFrame f;
+    robot.sensors().read(f);
+    frames.push_back(f);
+    poses.push_back(robot.true_state().pose);
+    delivered = robot.camera()->grab_latest(view);
+  }
+  ASSERT_TRUE(delivered);
+  const FrameTruth* truth = robot.camera_truth();
+  ASSERT_NE(truth, nullptr);
+  const auto at = static_cast<std::size_t>(view.capture_time.count() / 10'000'000);
+  const hal::SensorFrame& sensed = frames.at(at);
+  EXPECT_EQ(truth->body.pitch, sensed.body.tilt.pitch);
+  EXPECT_EQ(truth->body.roll, sensed.body.tilt.roll);
+
+  CameraRenderer renderer(world, CameraSpec{config.camera.intrinsics, config.camera.mount}, config.seed);
+  renderer.render(poses.at(at), hal::CameraPosture{sensed.body.tilt, sensed.head});
+  const auto bytes = static_cast<std::size_t>(view.stride) * static_cast<std::size_t>(view.height);
+  ASSERT_EQ(renderer.bgr().size(), bytes);
+  EXPECT_EQ(std::memcmp(renderer.bgr().data(), view.data, bytes), 0);
+  renderer.render(poses.at(at), sensed.head);
+  EXPECT_NE(std::memcmp(renderer.bgr().data(), view.data, bytes), 0);
 }
 
 }  // namespace

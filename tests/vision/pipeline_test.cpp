@@ -155,7 +155,7 @@ TEST(Pipeline, WrongFrameSizeIsRefused) {
   f.height = 240;
   f.stride = 640;
   f.data = bytes.data();
-  EXPECT_EQ(p.process(f, {}).status, VisionStatus::kBadFrame);
+  EXPECT_EQ(p.process(f, hal::HeadJoints{}).status, VisionStatus::kBadFrame);
 }
 
 // The messages the firmware posts hold what the pipeline reports, and survive the text round trip.

@@ -53,7 +53,9 @@ struct Camera {
   hal::CameraIntrinsics k = hal::CameraIntrinsics::nao();
   hal::CameraMount mount{};
   hal::HeadJoints head{0.0, 0.35};
-  [[nodiscard]] hal::CameraPose pose() const { return hal::CameraPose::from_head(mount, head); }
+  hal::BodyTilt body{};  // the torso's tilt (upright unless a test leans it)
+  [[nodiscard]] hal::CameraPosture posture() const { return {body, head}; }
+  [[nodiscard]] hal::CameraPose pose() const { return hal::CameraPose::from_body(mount, body, head); }
 };
 
 [[nodiscard]] Frame render(const Scene& scene, const Camera& cam, hal::PixelFormat format, std::uint64_t sequence = 0);

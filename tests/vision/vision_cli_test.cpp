@@ -1,7 +1,8 @@
 // ringlet-vision, the command-line tool, on pictures the simulator rendered with known ground
 // truth: as PNG (lines found, the ball found where it is, overlay written), as JPEG (what a real
 // camera's photographs are: lossy, still works), and on a picture that is not a field at all
-// (noise: must not crash, few or no lines).
+// (noise: must not crash, few or no lines); a tilted torso given by --body-pitch/--body-roll; bad
+// images (truncated, grey) and absurd angles; the time per frame and --repeat's statistics.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -33,10 +34,13 @@ struct ToolRun {
   std::string out;
 };
 
-/// Runs ringlet-vision; `out` is stdout, or stdout and stderr with `with_stderr`.
-ToolRun run(const std::string& args, bool with_stderr = false) {
+enum class Capture { kStdout, kBoth, kStderr };
+
+/// Runs ringlet-vision; `out` is what `capture` says (stdout; stdout and stderr; stderr only).
+ToolRun run_capturing(const std::string& args, Capture capture) {
   ToolRun r;
-  const std::string command = std::string(RINGLET_VISION_BIN) + " " + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
+  const char* redirect = capture == Capture::kStdout ? " 2>/dev/null" : capture == Capture::kBoth ? " 2>&1" : " 2>&1 >/dev/null";
+  const std::string command = std::string(RINGLET_VISION_BIN) + " " + args + redirect;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return r;
   char buffer[4096];
@@ -46,6 +50,13 @@ ToolRun run(const std::string& args, bool with_stderr = false) {
   r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
+
+/// Runs ringlet-vision; `out` is stdout, or stdout and stderr with `with_stderr`.
+ToolRun run(const std::string& args, bool with_stderr = false) {
+  return run_capturing(args, with_stderr ? Capture::kBoth : Capture::kStdout);
+}
+
+ToolRun run_stderr(const std::string& args) { return run_capturing(args, Capture::kStderr); }
 
 class VisionCli : public ::testing::Test {
  protected:
@@ -189,6 +200,12 @@ TEST_F(VisionCli, NonFiniteOrOutOfRangeCameraFlagsAreBadInput) {
       {"--cy 700 --fx 500 --fy 500", "--cx/--cy (320, 700) lies outside the 640x480 image"},
       {"--fy 500", "--fy needs --fx"},
       {"--pitch abc", "--pitch: not a number: abc"},
+      {"--body-pitch 45", "--body-pitch: must be within [-30, 30] deg"},
+      {"--body-pitch -31", "--body-pitch: must be within [-30, 30] deg"},
+      {"--body-roll 25", "--body-roll: must be within [-20, 20] deg"},
+      {"--body-roll nan", "--body-roll: must be a finite number, got nan"},
+      {"--body-pitch inf", "--body-pitch: must be a finite number, got inf"},
+      {"--repeat 0", "--repeat: Value 0 not in range 1 to 100000"},
   };
   for (const auto& [flags, message] : cases) {
     const ToolRun r = run(png + " " + flags, true);
@@ -199,6 +216,123 @@ TEST_F(VisionCli, NonFiniteOrOutOfRangeCameraFlagsAreBadInput) {
   // The ends of the NAO's range are allowed.
   EXPECT_EQ(run(png + " --pitch 29.5 --yaw -119.5").rc, 0);
   EXPECT_EQ(run(png + " --pitch -38.5").rc, 0);
+  EXPECT_EQ(run(png + " --body-pitch 30 --body-roll -20").rc, 0);
+}
+
+// A JPEG cut short: libjpeg decodes it with grey rows and a warning only; the tool refuses it.
+TEST_F(VisionCli, TruncatedJpegIsBadInput) {
+  const std::string bytes = [&] {
+    std::ifstream in(dir_ / "frame.jpg", std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  const fs::path file = dir_ / "cut.jpg";
+  std::ofstream(file, std::ios::binary) << bytes.substr(0, bytes.size() * 3 / 5);
+  const ToolRun r = run(file.string(), true);
+  EXPECT_EQ(r.rc, 2) << r.out;
+  EXPECT_NE(r.out.find("cut.jpg: not a readable image: truncated JPEG (no end-of-image marker)"), std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("\"status\""), std::string::npos) << r.out;
+  // Only the last two bytes (the end-of-image marker) missing: still refused.
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() - 2);
+  EXPECT_EQ(run(file.string()).rc, 2);
+}
+
+// A grey picture: processed (no colour, so nothing is found), with a warning on stderr and in the
+// JSON, for PNG and JPEG alike.
+TEST_F(VisionCli, GrayscaleImageIsWarnedAbout) {
+  cv::Mat grey;
+  cv::cvtColor(cv::imread((dir_ / "frame.png").string()), grey, cv::COLOR_BGR2GRAY);
+  for (const char* name : {"grey.png", "grey.jpg"}) {
+    const fs::path file = dir_ / name;
+    ASSERT_TRUE(cv::imwrite(file.string(), grey));
+    const ToolRun both = run_stderr(file.string() + " " + head_flags() + " --compact");
+    EXPECT_EQ(both.rc, 0) << both.out;
+    EXPECT_NE(both.out.find(std::string("ringlet-vision: warning: ") + file.string() +
+                            ": grayscale image: colour classification needs a colour picture"),
+              std::string::npos) << both.out;
+    const ToolRun r = run(file.string() + " " + head_flags() + " --compact");
+    ASSERT_EQ(r.rc, 0) << r.out;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j.at("warnings").size(), 1U) << r.out;
+    EXPECT_NE(j.at("warnings").at(0).get<std::string>().find("grayscale image"), std::string::npos);
+    EXPECT_EQ(j.at("lines").size(), 0U) << r.out;
+  }
+  // A colour picture has no warnings.
+  const ToolRun colour = run((dir_ / "frame.png").string() + " " + head_flags() + " --compact");
+  ASSERT_EQ(colour.rc, 0);
+  EXPECT_FALSE(nlohmann::json::parse(colour.out).contains("warnings"));
+}
+
+// Every run prints the time per stage and in total; --repeat N adds min ≤ median ≤ p99 ≤ max.
+TEST_F(VisionCli, TimePerFrameAndRepeatStatistics) {
+  const std::string png = (dir_ / "frame.png").string() + " " + head_flags() + " --compact";
+  const ToolRun once = run(png);
+  ASSERT_EQ(once.rc, 0) << once.out;
+  const nlohmann::json t = nlohmann::json::parse(once.out).at("time_ms");
+  double stages = 0.0;
+  for (const char* stage : {"horizon", "classify", "ball", "scan", "ransac"}) {
+    ASSERT_TRUE(t.contains(stage)) << t.dump();
+    EXPECT_GE(t.at(stage).get<double>(), 0.0);
+    stages += t.at(stage).get<double>();
+  }
+  EXPECT_GT(t.at("total").get<double>(), 0.0);
+  EXPECT_LE(stages, t.at("total").get<double>() + 1e-6);
+  EXPECT_GT(t.at("wall").get<double>(), 0.0);
+  EXPECT_FALSE(nlohmann::json::parse(once.out).contains("timing"));
+
+  const ToolRun repeated = run(png + " --repeat 7");
+  ASSERT_EQ(repeated.rc, 0) << repeated.out;
+  const nlohmann::json j = nlohmann::json::parse(repeated.out);
+  EXPECT_EQ(j.at("timing").at("repeat"), 7);
+  for (const char* which : {"total_ms", "wall_ms"}) {
+    const auto& s = j.at("timing").at(which);
+    EXPECT_GT(s.at("min").get<double>(), 0.0) << which;
+    EXPECT_LE(s.at("min").get<double>(), s.at("median").get<double>()) << which;
+    EXPECT_LE(s.at("median").get<double>(), s.at("p99").get<double>()) << which;
+    EXPECT_LE(s.at("p99").get<double>(), s.at("max").get<double>()) << which;
+  }
+  EXPECT_TRUE(j.at("timing").at("stages_ms").contains("ransac"));
+  // The detections do not change with repetition.
+  const nlohmann::json first = nlohmann::json::parse(once.out);
+  EXPECT_EQ(j.at("lines"), first.at("lines"));
+  EXPECT_EQ(j.at("ball"), first.at("ball"));
+  const ToolRun text = run_stderr(png + " --repeat 3");
+  EXPECT_NE(text.out.find("ringlet-vision: 3 runs, thread CPU ms per frame: min "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(" p99 "), std::string::npos) << text.out;
+}
+
+// A torso leaning 6° forward and 4° to the right: with --body-pitch/--body-roll the ball lands
+// where it is; taken as upright, it lands far off (the horizon and every ground ray are wrong).
+TEST_F(VisionCli, BodyTiltFlagsPutTheBallWhereItIs) {
+  sim_hal::CameraRenderer renderer(sim_hal::load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"), sim_hal::CameraSpec{}, 3);
+  const hal::BodyTilt body{hal::deg_to_rad(6.0), hal::deg_to_rad(4.0)};
+  renderer.render({2.1, -0.3, -std::acos(0.0)},
+                  hal::CameraPosture{body, {hal::deg_to_rad(yaw_deg_), hal::deg_to_rad(pitch_deg_ - 6.0)}});
+  const sim_hal::FrameTruth truth = renderer.truth();
+  ASSERT_TRUE(truth.ball.visible);
+  const cv::Mat bgr(480, 640, CV_8UC3, const_cast<std::uint8_t*>(renderer.bgr().data()));
+  const fs::path file = dir_ / "tilted.png";
+  ASSERT_TRUE(cv::imwrite(file.string(), bgr));
+  const std::string head = "--yaw " + std::to_string(yaw_deg_) + " --pitch " + std::to_string(pitch_deg_ - 6.0);
+
+  const ToolRun r = run(file.string() + " " + head + " --body-pitch 6 --body-roll 4 --compact");
+  ASSERT_EQ(r.rc, 0) << r.out;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.at("ball").at("seen").get<bool>()) << r.out;
+  const auto& g = j.at("ball").at("ground");
+  const double error = std::hypot(g.at(0).get<double>() - truth.ball.position.x, g.at(1).get<double>() - truth.ball.position.y);
+  EXPECT_LT(error, 0.15) << r.out;
+  EXPECT_EQ(j.at("posture_deg").at("body_roll"), 4.0);
+
+  const ToolRun upright = run(file.string() + " " + head + " --compact");
+  ASSERT_EQ(upright.rc, 0) << upright.out;
+  const nlohmann::json u = nlohmann::json::parse(upright.out);
+  if (u.at("ball").at("seen").get<bool>() && u.at("ball").contains("ground")) {
+    const auto& ug = u.at("ball").at("ground");
+    const double upright_error =
+        std::hypot(ug.at(0).get<double>() - truth.ball.position.x, ug.at(1).get<double>() - truth.ball.position.y);
+    EXPECT_GT(upright_error, 3.0 * error + 0.1) << upright.out;
+  }
 }
 
 }  // namespace

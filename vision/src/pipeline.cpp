@@ -17,12 +17,13 @@ VisionPipeline::VisionPipeline(const VisionConfig& config, ColourTable table)
       ransac_(config.ransac, config.max_candidates),
       ball_(config.ball, config.intrinsics.width, config.intrinsics.height) {}
 
-const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const hal::HeadJoints& head,
+const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const hal::CameraPosture& posture,
                                             const Deadline& deadline, int degrade_level) noexcept {
   VisionResult& r = result_;
   r = VisionResult{};
   r.sequence = frame.sequence;
   r.capture_time = frame.capture_time;
+  r.posture = posture;
   r.degrade_level = std::clamp(degrade_level, 0, kDegradeLevels - 1);
   const DegradeProfile& level = config_.degrade[static_cast<std::size_t>(r.degrade_level)];
   const hal::CameraIntrinsics& k = config_.intrinsics;
@@ -46,7 +47,7 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     return false;
   };
 
-  const hal::CameraPose pose = hal::CameraPose::from_head(config_.mount, head);
+  const hal::CameraPose pose = hal::CameraPose::from_posture(config_.mount, posture);
   r.horizon_row = horizon_rows(k, pose, config_.horizon_margin_px, first_row_);
   lap(Stage::kHorizon);
 

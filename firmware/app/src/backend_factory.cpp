@@ -47,6 +47,16 @@ std::shared_ptr<const BackendSettings> read_sim(Section& section, const std::fil
   s.laser_range = section.number("laser_range", s.laser_range, 0.1, 100.0);
   s.laser_sigma = section.number("laser_sigma", s.laser_sigma, 0.0, 10.0);
   s.head_max_rate = section.number("head_max_rate", s.head_max_rate, 0.01, 100.0);
+  // The torso's tilt (degrees here, radians in SimBodyTilt); SimRobot checks lean + sway together.
+  using Tilt = hal::BodyTiltRange;
+  const auto degrees = [&](const char* key, double rad, double max_deg) {
+    return hal::deg_to_rad(section.number(key, hal::rad_to_deg(rad), -max_deg, max_deg));
+  };
+  s.body.pitch = degrees("body_pitch_deg", s.body.pitch, Tilt::kMaxPitchDeg);
+  s.body.roll = degrees("body_roll_deg", s.body.roll, Tilt::kMaxRollDeg);
+  s.body.sway_pitch = hal::deg_to_rad(section.number("body_sway_pitch_deg", hal::rad_to_deg(s.body.sway_pitch), 0.0, 10.0));
+  s.body.sway_roll = hal::deg_to_rad(section.number("body_sway_roll_deg", hal::rad_to_deg(s.body.sway_roll), 0.0, 10.0));
+  s.body.sway_period = section.number("body_sway_period", s.body.sway_period, 0.05, 60.0);
   return out;
 }
 

@@ -53,6 +53,11 @@ cv::Mat decode_image_file(const std::filesystem::path& path, std::string& why) {
     why = path.filename().string() + ": cannot decode image: " + probe.error;
     return {};
   }
+  // libjpeg decodes a JPEG cut short with grey rows and only a warning: refuse it here.
+  if (const std::string cut = image_truncation(bytes, probe.header->format); !cut.empty()) {
+    why = path.filename().string() + ": cannot decode image: " + cut;
+    return {};
+  }
   cv::Mat bgr;
   try {
     // imdecode only reads the buffer (the const_cast is its C-style API).

@@ -57,6 +57,10 @@ void append_record(std::vector<std::uint8_t>& out, const SensorRecord& r) {
   w.f64(f.odometry.curvature);
   w.f64(f.head.yaw);
   w.f64(f.head.pitch);
+  w.i64(f.body.stamp.count());
+  w.f64(f.body.tilt.pitch);
+  w.f64(f.body.tilt.roll);
+  w.boolean(f.body.valid);
   w.f64(f.power.battery_volts);
   w.f64(f.power.bus_volts);
   w.i64(f.laser.stamp.count());

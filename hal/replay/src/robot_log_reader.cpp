@@ -112,8 +112,10 @@ struct RobotLogReader::Impl {
     LeReader r{h.data() + kRobotLogMagic.size()};
     header.version = r.u32();
     if (header.version != kRobotLogVersion) {
+      // Version 1 logs predate the inertial unit: say so, since "record it again" is the remedy.
       fail("unsupported version " + std::to_string(header.version) + " (this build reads version " +
-               std::to_string(kRobotLogVersion) + ")",
+               std::to_string(kRobotLogVersion) +
+               (header.version == 1 ? "; version 1 logs have no torso tilt, record the run again" : "") + ")",
            8);
     }
     const std::int64_t period = r.i64();
@@ -226,6 +228,10 @@ struct RobotLogReader::Impl {
     f.odometry.curvature = r.f64();
     f.head.yaw = r.f64();
     f.head.pitch = r.f64();
+    f.body.stamp = Nanos{r.i64()};
+    f.body.tilt.pitch = r.f64();
+    f.body.tilt.roll = r.f64();
+    f.body.valid = read_bool(r, "sensor record: body.valid", at);
     f.power.battery_volts = r.f64();
     f.power.bus_volts = r.f64();
     f.laser.stamp = Nanos{r.i64()};

@@ -1,20 +1,26 @@
 // ringlet-vision: runs Ringlet's vision pipeline on one image file (PNG or JPEG: a rendered frame
 // or a photograph from a NAO's head camera) and prints the lines, centre circle and ball it found
-// as JSON on stdout; --overlay draws them over the picture.
+// as JSON on stdout, with the time each stage took; --overlay draws them over the picture;
+// --repeat N processes the frame N times and adds timing statistics.
 //
 // The camera that took the picture is given by flags (image size, field of view or fx/fy/cx/cy,
-// mount, head yaw and pitch): the pipeline needs them to find the horizon and put points on the
-// ground. Defaults are the NAO's head camera at 20° pitch.
+// mount, head yaw and pitch, the torso's pitch and roll from the inertial unit): the pipeline
+// needs them to find the horizon and put points on the ground. Defaults are the NAO's head camera
+// at 20° pitch on an upright torso.
 //
-// Exit codes: 0 done · 2 bad input (flags, unreadable image, wrong image size, missing or corrupt
-// colour table) · 1 internal or output error (e.g. the overlay cannot be written).
+// Exit codes: 0 done (warnings, e.g. a grey picture, go to stderr and the JSON's "warnings") ·
+// 2 bad input (flags, unreadable or truncated image, wrong image size, missing or corrupt colour
+// table) · 1 internal or output error (e.g. the overlay cannot be written).
 #include <CLI/CLI.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include <iomanip>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "vision_io.hpp"
 
@@ -31,6 +37,7 @@ struct Options {
   std::uint64_t seed = RansacParams{}.seed;
   int max_trials = RansacParams{}.max_trials;
   int skip = RansacParams{}.skip;
+  int repeat = 1;
   bool compact = false;
 };
 
@@ -43,18 +50,57 @@ int run(const Options& o) {
   config.ransac.skip = o.skip;
   // Both are checked before anything runs, so a bad table or image never gives partial output.
   ColourTable table = tools::load_table(o.lut);
-  const cv::Mat bgr = tools::load_bgr(o.image, config.intrinsics.width, config.intrinsics.height);
+  const tools::LoadedImage image = tools::load_frame(o.image, config.intrinsics.width, config.intrinsics.height);
+  for (const std::string& w : image.warnings) std::cerr << "ringlet-vision: warning: " << o.image << ": " << w << "\n";
+  const cv::Mat& bgr = image.bgr;
 
   VisionPipeline pipeline(config, std::move(table));
-  const hal::HeadJoints head = o.camera.head();
-  const VisionResult& result = pipeline.process(tools::frame_view(bgr), head);
+  const hal::CameraPosture posture = o.camera.posture();
+  // Stages are timed on this thread's CPU clock (what the robot's budget is judged on; other
+  // processes on the host do not inflate it), the whole frame on the wall clock too. The deadline
+  // never expires: a desktop run does all the work.
+  hal::ThreadStopwatch watch;
+  const Deadline timed{&watch, hal::Nanos::max(), true};
+  const hal::FrameView view = tools::frame_view(bgr);
+  std::vector<hal::Nanos> cpu, wall;
+  std::vector<std::vector<hal::Nanos>> stages(kStageCount);
+  cpu.reserve(static_cast<std::size_t>(o.repeat));
+  wall.reserve(static_cast<std::size_t>(o.repeat));
+  for (int i = 0; i < o.repeat; ++i) {
+    const hal::Nanos start = watch.wall_now();
+    const VisionResult& r = pipeline.process(view, posture, timed);
+    wall.push_back(watch.wall_now() - start);
+    cpu.push_back(r.total_time);
+    for (std::size_t s = 0; s < kStageCount; ++s) stages[s].push_back(r.stage_time[s]);
+  }
+  const VisionResult& result = pipeline.result();  // the same every time: the frame's seed is fixed
   nlohmann::json out = tools::result_json(result);
   out["image"] = o.image;
+  out["posture_deg"] = {{"head_yaw", o.camera.yaw_deg},
+                        {"head_pitch", o.camera.pitch_deg},
+                        {"body_pitch", o.camera.body_pitch_deg},
+                        {"body_roll", o.camera.body_roll_deg}};
+  out["time_ms"] = tools::stage_times_json(result);
+  out["time_ms"]["wall"] = static_cast<double>(wall.back().count()) / 1e6;
+  out["time_clock"] = "stages and total: this thread's CPU time; wall: the monotonic clock";
+  if (!image.warnings.empty()) out["warnings"] = image.warnings;
+  if (o.repeat > 1) {
+    const tools::TimeStats total = tools::time_stats(cpu);
+    const tools::TimeStats wall_stats = tools::time_stats(wall);
+    nlohmann::json per_stage = nlohmann::json::object();
+    for (std::size_t s = 0; s < kStageCount; ++s) per_stage[tools::stage_name(s)] = tools::to_json(tools::time_stats(stages[s]));
+    out["timing"] = {{"repeat", o.repeat}, {"total_ms", tools::to_json(total)}, {"wall_ms", tools::to_json(wall_stats)},
+                     {"stages_ms", per_stage}};
+    std::cerr << std::fixed << std::setprecision(3) << "ringlet-vision: " << o.repeat
+              << " runs, thread CPU ms per frame: min " << total.min_ms << " median "
+              << total.median_ms << " p99 " << total.p99_ms << " max " << total.max_ms << " (wall median "
+              << wall_stats.median_ms << ")\n";
+  }
   std::cout << out.dump(o.compact ? -1 : 2) << "\n";
 
   if (!o.overlay.empty()) {
     cv::Mat drawn = bgr.clone();
-    tools::draw_result(drawn, result, config.intrinsics, hal::CameraPose::from_head(config.mount, head));
+    tools::draw_result(drawn, result, config.intrinsics, hal::CameraPose::from_posture(config.mount, posture));
     bool written = false;
     try {
       written = cv::imwrite(o.overlay, drawn);
@@ -85,6 +131,9 @@ int main(int argc, char** argv) {
       ->capture_default_str()->check(CLI::Range(1, 100000));
   app.add_option("--skip", o.skip, "RANSAC_SKIP: only every N-th candidate point is used")
       ->capture_default_str()->check(CLI::Range(1, 1000));
+  app.add_option("--repeat", o.repeat, "process the frame N times and add timing statistics (min, median, p99, max "
+                                       "in ms) to the JSON and stderr")
+      ->capture_default_str()->check(CLI::Range(1, 100000));
   app.add_flag("--compact", o.compact, "one-line JSON");
   o.camera.add_to(app);
   return tools::run_tool(app, argc, argv, "ringlet-vision", [&] { return run(o); });

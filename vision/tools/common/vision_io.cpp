@@ -1,5 +1,6 @@
 #include "vision_io.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -11,6 +12,7 @@
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/image_header.hpp"
 #include "ringlet/hal/read_file.hpp"
+#include "ringlet/vision/horizon.hpp"
 
 namespace ringlet::vision::tools {
 
@@ -19,6 +21,9 @@ cv::Mat decode_image(std::span<const std::uint8_t> bytes, const std::string& sou
   // The header first: a decoder allocates what the header declares before it reads a pixel.
   const hal::ImageProbe probe = hal::probe_image(bytes, max_pixels);
   if (!probe.ok()) throw ToolError(source + ": not a readable image: " + probe.error);
+  // A file cut short decodes "fine" (libjpeg fills the missing rows with grey and only warns).
+  const std::string truncated = hal::image_truncation(bytes, probe.header->format);
+  if (!truncated.empty()) throw ToolError(source + ": not a readable image: " + truncated);
   cv::Mat bgr;
   try {
     // imdecode wants a Mat; it only reads the buffer (the const_cast is its C-style API).
@@ -46,14 +51,39 @@ cv::Mat load_image(const std::filesystem::path& file, int imread_flags) {
                       imread_flags);
 }
 
-cv::Mat load_bgr(const std::filesystem::path& file, int width, int height) {
-  cv::Mat bgr = load_image(file, cv::IMREAD_COLOR);
+namespace {
+
+void check_size(const cv::Mat& bgr, const std::filesystem::path& file, int width, int height) {
   if (width > 0 && (bgr.cols != width || bgr.rows != height)) {
     throw ToolError(file.string() + ": image is " + std::to_string(bgr.cols) + "x" + std::to_string(bgr.rows) +
                     ", the camera is " + std::to_string(width) + "x" + std::to_string(height) +
                     " (give --width/--height and the intrinsics of the camera that took it)");
   }
+}
+
+}  // namespace
+
+cv::Mat load_bgr(const std::filesystem::path& file, int width, int height) {
+  cv::Mat bgr = load_image(file, cv::IMREAD_COLOR);
+  check_size(bgr, file, width, height);
   return bgr;
+}
+
+LoadedImage load_frame(const std::filesystem::path& file, int width, int height) {
+  const hal::FileRead read = hal::read_file(file, "image", hal::kMaxBinaryFileBytes);
+  if (!read.ok()) throw ToolError(read.error);
+  const std::span<const std::uint8_t> bytes{reinterpret_cast<const std::uint8_t*>(read.bytes.data()), read.bytes.size()};
+  LoadedImage out;
+  out.bgr = decode_image(bytes, file.string(), cv::IMREAD_COLOR);
+  check_size(out.bgr, file, width, height);
+  // What the decoder hid: it hands a grey picture out as three equal channels.
+  const hal::ImageProbe probe = hal::probe_image(bytes);
+  if (probe.ok() && probe.header->grayscale()) {
+    out.warnings.emplace_back(
+        "grayscale image: colour classification needs a colour picture (green field, white lines, the ball's "
+        "colours), so it is processed as colourless and will find no field, lines or ball");
+  }
+  return out;
 }
 
 hal::FrameView frame_view(const cv::Mat& bgr, std::uint64_t sequence) {
@@ -119,6 +149,14 @@ void CameraOptions::add_to(CLI::App& app, bool with_head) {
   app.add_option("--camera-up", mount.up, "camera above the pivot (m)")
       ->capture_default_str()->check(finite_range(-1.0, 1.0, "m"));
   if (with_head) {
+    using B = hal::BodyTiltRange;
+    app.add_option("--body-pitch", body_pitch_deg,
+                   "torso pitch from the inertial unit when the image was taken (deg, leaning forward positive)")
+        ->capture_default_str()
+        ->check(finite_range(-B::kMaxPitchDeg, B::kMaxPitchDeg, "deg (a standing or walking NAO; beyond, it is falling)"));
+    app.add_option("--body-roll", body_roll_deg, "torso roll (deg, leaning to the robot's right positive)")
+        ->capture_default_str()
+        ->check(finite_range(-B::kMaxRollDeg, B::kMaxRollDeg, "deg (a standing or walking NAO; beyond, it is falling)"));
     using R = hal::NaoHeadRange;
     app.add_option("--yaw", yaw_deg, "head yaw when the image was taken (deg, left positive; the NAO's range)")
         ->capture_default_str()->check(finite_range(-R::kMaxYawDeg, R::kMaxYawDeg, "deg (the NAO's HeadYaw range)"));
@@ -146,6 +184,8 @@ hal::CameraIntrinsics CameraOptions::intrinsics() const {
 }
 
 hal::HeadJoints CameraOptions::head() const { return {hal::deg_to_rad(yaw_deg), hal::deg_to_rad(pitch_deg)}; }
+
+hal::BodyTilt CameraOptions::body() const { return {hal::deg_to_rad(body_pitch_deg), hal::deg_to_rad(body_roll_deg)}; }
 
 nlohmann::json result_json(const VisionResult& r) {
   nlohmann::json lines = nlohmann::json::array();
@@ -178,9 +218,50 @@ nlohmann::json result_json(const VisionResult& r) {
   return out;
 }
 
+std::string stage_name(std::size_t stage) {
+  switch (static_cast<Stage>(stage)) {
+    case Stage::kHorizon: return "horizon";
+    case Stage::kClassify: return "classify";
+    case Stage::kBall: return "ball";
+    case Stage::kScan: return "scan";
+    case Stage::kRansac: return "ransac";
+    default: return "stage " + std::to_string(stage);  // a stage added without a name here
+  }
+}
+
+namespace {
+double to_ms(hal::Nanos t) { return static_cast<double>(t.count()) / 1e6; }
+}  // namespace
+
+nlohmann::json stage_times_json(const VisionResult& r) {
+  nlohmann::json out = nlohmann::json::object();
+  for (std::size_t i = 0; i < kStageCount; ++i) out[stage_name(i)] = to_ms(r.stage_time[i]);
+  out["total"] = to_ms(r.total_time);
+  return out;
+}
+
+TimeStats time_stats(std::vector<hal::Nanos>& samples) {
+  if (samples.empty()) return {};
+  std::sort(samples.begin(), samples.end());
+  const std::size_t n = samples.size();
+  // Nearest rank: the smallest sample with at least p of them at or below it.
+  const auto rank = [n](double p) { return std::min(n - 1, static_cast<std::size_t>(std::ceil(p * static_cast<double>(n))) - 1); };
+  return {to_ms(samples.front()), to_ms(samples[rank(0.5)]), to_ms(samples[rank(0.99)]), to_ms(samples.back())};
+}
+
+nlohmann::json to_json(const TimeStats& s) {
+  return {{"min", s.min_ms}, {"median", s.median_ms}, {"p99", s.p99_ms}, {"max", s.max_ms}};
+}
+
 void draw_result(cv::Mat& bgr, const VisionResult& r, const hal::CameraIntrinsics& k, const hal::CameraPose& pose) {
   const auto pt = [](const hal::Pixel& p) { return cv::Point(static_cast<int>(std::lround(p.u)), static_cast<int>(std::lround(p.v))); };
-  cv::line(bgr, {0, r.horizon_row}, {bgr.cols - 1, r.horizon_row}, {255, 128, 0}, 1);
+  // The horizon of the whole chain: slanted when the torso is rolled.
+  const double h0 = horizon_v(k, pose, 0.0);
+  const double h1 = horizon_v(k, pose, static_cast<double>(bgr.cols));
+  if (std::isfinite(h0) && std::isfinite(h1) && std::abs(h0) < 1e5 && std::abs(h1) < 1e5) {
+    cv::line(bgr, {0, static_cast<int>(std::lround(h0))}, {bgr.cols - 1, static_cast<int>(std::lround(h1))},
+             {255, 128, 0}, 1);
+  }
   for (std::size_t i = 0; i < r.line_count; ++i) {
     const FieldLine& l = r.lines[i];
     cv::line(bgr, pt(l.image_start), pt(l.image_end), {0, 0, 0}, 5);

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -27,7 +28,8 @@ class ToolError : public std::runtime_error {
 /// The bytes of a PNG or JPEG file as BGR, as every vision tool decodes images: the header is
 /// checked first (hal::probe_image: PNG or JPEG, at most `max_pixels`), then OpenCV decodes it.
 /// ToolError "<source>: not a readable image: <why>" for anything else (OpenCV's exceptions
-/// included).
+/// included), and for a file cut short ("truncated JPEG (no end-of-image marker)",
+/// hal::image_truncation: libjpeg would decode it with grey rows and only a warning).
 [[nodiscard]] cv::Mat decode_bgr(std::span<const std::uint8_t> bytes, const std::string& source,
                                  std::size_t max_pixels = hal::kMaxImagePixels);
 /// The same with other cv::imread flags (IMREAD_UNCHANGED for label images).
@@ -41,6 +43,18 @@ class ToolError : public std::runtime_error {
 /// or decoded, or (when width > 0) is not width × height.
 [[nodiscard]] cv::Mat load_bgr(const std::filesystem::path& file, int width = 0, int height = 0);
 
+/// An image decoded for the pipeline, with what the person running the tool should be told.
+struct LoadedImage {
+  cv::Mat bgr;
+  /// Things that make the results doubtful but not impossible, without the file name (the caller
+  /// adds it): a grey picture, decoded as three equal channels, in which colour classification
+  /// finds no field, no lines and no ball.
+  std::vector<std::string> warnings;
+};
+
+/// load_bgr, and the warnings about the picture (see LoadedImage).
+[[nodiscard]] LoadedImage load_frame(const std::filesystem::path& file, int width, int height);
+
 /// A view of a BGR image for the pipeline (valid while the image lives).
 [[nodiscard]] hal::FrameView frame_view(const cv::Mat& bgr, std::uint64_t sequence = 0);
 
@@ -49,9 +63,9 @@ class ToolError : public std::runtime_error {
 [[nodiscard]] ColourTable load_table(const std::filesystem::path& file);
 
 /// Camera and head options shared by the tools: image size, field of view (or fx/fy/cx/cy),
-/// mount, head yaw and pitch (degrees). Every number must be finite and in its range (the
-/// --help text shows each range; yaw and pitch are the NAO's joint ranges, hal::NaoHeadRange),
-/// else the tool exits 2 naming the flag.
+/// mount, head yaw and pitch, torso pitch and roll (degrees). Every number must be finite and in
+/// its range (the --help text shows each range; yaw and pitch are the NAO's joint ranges,
+/// hal::NaoHeadRange; the torso's are hal::BodyTiltRange), else the tool exits 2 naming the flag.
 struct CameraOptions {
   int width = 640;
   int height = 480;
@@ -61,10 +75,15 @@ struct CameraOptions {
   hal::CameraMount mount{};
   double yaw_deg = 0.0;
   double pitch_deg = 20.0;
+  double body_pitch_deg = 0.0;  // the torso's tilt (hal::BodyTilt): forward positive
+  double body_roll_deg = 0.0;   // leaning right positive
 
+  /// With the head: --yaw, --pitch, --body-pitch and --body-roll too.
   void add_to(CLI::App& app, bool with_head = true);
   [[nodiscard]] hal::CameraIntrinsics intrinsics() const;
   [[nodiscard]] hal::HeadJoints head() const;
+  [[nodiscard]] hal::BodyTilt body() const;
+  [[nodiscard]] hal::CameraPosture posture() const { return {body(), head()}; }
 };
 
 /// A CLI11 check: a finite number in [lo, hi] (`unit` follows the range in the message).
@@ -76,6 +95,22 @@ struct CameraOptions {
 [[nodiscard]] std::string fmt_number(double v);
 
 [[nodiscard]] nlohmann::json result_json(const VisionResult& result);
+
+/// The name of a pipeline stage in the JSON ("horizon", "classify", ...).
+[[nodiscard]] std::string stage_name(std::size_t stage);
+/// A frame's time per stage and in total, in ms ({"horizon": 0.01, ..., "total": 1.2}).
+[[nodiscard]] nlohmann::json stage_times_json(const VisionResult& result);
+
+/// min, median, p99 (nearest rank) and max of some durations, in ms.
+struct TimeStats {
+  double min_ms = 0.0;
+  double median_ms = 0.0;
+  double p99_ms = 0.0;
+  double max_ms = 0.0;
+};
+/// Statistics of `samples` (sorted in place); all zero when empty.
+[[nodiscard]] TimeStats time_stats(std::vector<hal::Nanos>& samples);
+[[nodiscard]] nlohmann::json to_json(const TimeStats& s);
 
 /// Every vision tool's main: parses the command line, then runs `body`, turning failures into the
 /// tools' exit codes — 0 for --help, 2 for bad flags or bad input (ToolError, printed as

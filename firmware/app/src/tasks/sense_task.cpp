@@ -34,7 +34,8 @@ void SenseTask::run(const executive::TaskContext& ctx) noexcept {
   if (!ok && sensors_.exhausted()) ctx.request_stop();  // a replayed log has ended
   board_.post(wb::Pose{frame_.pose.pose.x, frame_.pose.pose.y, frame_.pose.pose.theta, ok && frame_.pose.valid});
   board_.post(summarize(frame_.laser));
-  board_.post(wb::HeadPosture{frame_.stamp.count(), frame_.head.yaw, frame_.head.pitch});
+  board_.post(wb::HeadPosture{frame_.stamp.count(), frame_.head.yaw, frame_.head.pitch, frame_.body.tilt.pitch,
+                              frame_.body.tilt.roll, frame_.body.valid});
   board_.post(wb::BodyState{frame_.stamp.count(), frame_.odometry.distance, frame_.odometry.velocity,
                             frame_.odometry.curvature, frame_.collided, frame_.power.battery_volts});
 }

@@ -38,11 +38,11 @@ VisionTask::VisionTask(hal::Camera& camera, std::unique_ptr<vision::VisionPipeli
                        VisionDeadline deadline, VisionStats& stats) noexcept
     : camera_(camera), pipeline_(std::move(pipeline)), board_(board), deadline_(deadline), stats_(stats) {}
 
-hal::HeadJoints VisionTask::head_at(hal::Nanos when) const noexcept {
-  // The posture sensed closest to `when`, among the generations the whiteboard still holds (the
-  // newest when none is left).
+hal::CameraPosture VisionTask::posture_at(hal::Nanos when) const noexcept {
+  // The posture (head joints and torso tilt, sensed together) closest to `when`, among the
+  // generations the whiteboard still holds (the newest when none is left).
   const std::uint64_t newest = board_.generation<wb::HeadPosture>();
-  hal::HeadJoints best{};
+  hal::CameraPosture best{};
   hal::Nanos best_gap = hal::Nanos::max();
   for (std::uint64_t g = newest; g > 0 && newest - g < board_.depth(); --g) {
     const auto r = board_.read<wb::HeadPosture>(g);
@@ -51,7 +51,9 @@ hal::HeadJoints VisionTask::head_at(hal::Nanos when) const noexcept {
     const hal::Nanos gap = stamp > when ? stamp - when : when - stamp;
     if (gap < best_gap) {
       best_gap = gap;
-      best = {r.msg.yaw, r.msg.pitch};
+      best.head = {r.msg.yaw, r.msg.pitch};
+      // No inertial reading: the torso is taken as upright.
+      best.body = r.msg.body_valid ? hal::BodyTilt{r.msg.body_pitch, r.msg.body_roll} : hal::BodyTilt{};
     }
   }
   return best;
@@ -68,7 +70,7 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
       deadline_ == VisionDeadline::kNone
           ? vision::Deadline{}
           : vision::Deadline::after(*ctx.stopwatch, ctx.time_left(), deadline_ == VisionDeadline::kCpu);
-  const vision::VisionResult& r = pipeline_->process(frame, head_at(frame.capture_time), deadline, ctx.degrade_level);
+  const vision::VisionResult& r = pipeline_->process(frame, posture_at(frame.capture_time), deadline, ctx.degrade_level);
   ++stats_.frames;
   cost_ = kNoFrameCost + vision::modelled_cost(r.work);
   if (r.status != vision::VisionStatus::kOk) {

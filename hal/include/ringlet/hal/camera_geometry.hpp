@@ -2,10 +2,15 @@
 // Where the head camera looks: a pinhole camera on a pan-tilt head, shared by everything that maps
 // pixels to the world and back (the simulated camera renders with it, vision projects with it).
 //
-// Frames:
+// Frames (the kinematic chain, from the ground up):
 //   robot  — x ahead, y left, z up; origin on the ground under the robot's centre (RobotPoint).
-//   head   — the robot frame turned by yaw about z (left positive), then by pitch about the
-//            turned y axis (positive looks down, as hal::HeadJoints).
+//            It stays level: the ground is z = 0 whatever the torso does.
+//   torso  — the robot frame tilted about its origin by the body's pitch about y (positive leans
+//            forward), then by its roll about the tilted x axis (positive leans to the right):
+//            R_torso = Ry(pitch) · Rx(roll), hal::BodyTilt. Upright, torso = robot.
+//   head   — the torso frame turned by yaw about its z (left positive), then by pitch about the
+//            turned y axis (positive looks down, as hal::HeadJoints), about the pan-tilt pivot
+//            `pivot_height` above the origin along the torso's z axis.
 //   camera — OpenCV's: x right, y down, z along the optical axis (= head x).
 // Pixels: u = fx·X/Z + cx to the right, v = fy·Y/Z + cy downwards, (0, 0) the top-left corner of
 // the top-left pixel.
@@ -59,14 +64,42 @@ struct NaoHeadRange {
   static constexpr double kMaxPitchDeg = 29.5;   // looking down
 };
 
-/// The camera for one head posture: its position and axes, in the robot frame. The axes are the
+/// Everything between the ground and the camera that moves: the torso's tilt and the head joints.
+/// (A constructor rather than an aggregate: `{yaw, pitch}` stays a HeadJoints wherever an overload
+/// takes either, instead of being ambiguous through brace elision.)
+struct CameraPosture {
+  BodyTilt body{};
+  HeadJoints head{};
+
+  constexpr CameraPosture() noexcept = default;
+  constexpr CameraPosture(const BodyTilt& tilt, const HeadJoints& joints) noexcept : body(tilt), head(joints) {}
+};
+
+/// The NAO's torso tilt that the tools accept from a user: a standing or walking NAO leans a few
+/// degrees (1–7° measured on real photos); past about 30° forward or 20° sideways it is falling
+/// and its camera is of no use for the field.
+struct BodyTiltRange {
+  static constexpr double kMaxPitchDeg = 30.0;
+  static constexpr double kMaxRollDeg = 20.0;
+};
+
+/// The camera for one posture: its position and axes, in the robot frame. The axes are the
 /// columns of the camera→robot rotation (camera_geometry.cpp composes and applies it with Eigen;
 /// this header stays plain so that the layers above need no Eigen).
 struct CameraPose {
   Vec3 position{};
   std::array<Vec3, 3> axes{};  // camera x (right), y (down), z (optical axis), as robot vectors
 
-  [[nodiscard]] static CameraPose from_head(const CameraMount& mount, const HeadJoints& head) noexcept;
+  /// The whole chain: ground → torso tilted by `body` → head joints → camera.
+  [[nodiscard]] static CameraPose from_body(const CameraMount& mount, const BodyTilt& body,
+                                            const HeadJoints& head) noexcept;
+  [[nodiscard]] static CameraPose from_posture(const CameraMount& mount, const CameraPosture& posture) noexcept {
+    return from_body(mount, posture.body, posture.head);
+  }
+  /// An upright torso (zero tilt): from_body(mount, {}, head), bit for bit.
+  [[nodiscard]] static CameraPose from_head(const CameraMount& mount, const HeadJoints& head) noexcept {
+    return from_body(mount, BodyTilt{}, head);
+  }
 
   /// A robot-frame point in camera coordinates.
   [[nodiscard]] Vec3 to_camera(const Vec3& robot) const noexcept;

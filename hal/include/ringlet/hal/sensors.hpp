@@ -31,6 +31,30 @@ struct HeadJoints {
   double pitch = 0.0;
 };
 
+/// The torso's tilt from the vertical, in radians, as an inertial unit measures it (the NAO's
+/// InertialSensor AngleY and AngleX), both right-handed rotations in the robot frame:
+///   pitch — about the robot's y axis (left): positive leans forward, so the head camera looks
+///           further down (like a positive HeadJoints::pitch);
+///   roll  — about the robot's x axis (ahead): positive lifts the left side, i.e. the torso leans
+///           to its right.
+/// The torso turns about the point on the ground under the robot's centre (the robot frame's
+/// origin); hal/camera_geometry.hpp composes it with the head joints.
+struct BodyTilt {
+  double pitch = 0.0;
+  double roll = 0.0;
+};
+
+/// The inertial unit's reading: the torso's tilt, stamped; invalid when the backend has no
+/// inertial unit or could not read it (the tilt is then taken as zero: an upright torso).
+struct InertialState {
+  Nanos stamp{0};
+  BodyTilt tilt{};
+  bool valid = false;
+
+  /// The tilt to use for the camera: the measured one, or upright when there is none.
+  [[nodiscard]] BodyTilt tilt_or_upright() const noexcept { return valid ? tilt : BodyTilt{}; }
+};
+
 struct PowerState {
   double battery_volts = 0.0;
   double bus_volts = 0.0;
@@ -62,6 +86,7 @@ struct SensorFrame {
   PoseMeasurement pose{};
   WheelOdometry odometry{};
   HeadJoints head{};
+  InertialState body{};  // the torso's pitch and roll
   PowerState power{};
   LaserScan laser{};
   bool collided = false;  // the base's bumper: touching an obstacle right now

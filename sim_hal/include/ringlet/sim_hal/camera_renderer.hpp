@@ -40,9 +40,14 @@ class CameraRenderer {
   /// and the background; the same seed always gives the same pictures.
   CameraRenderer(World world, const CameraSpec& spec, std::uint64_t seed);
 
-  /// Renders the view from the true robot pose `pose` with the head at `head` into bgr(), and
-  /// the ground truth into truth(). Never allocates.
-  void render(const hal::Pose2& pose, const hal::HeadJoints& head) noexcept;
+  /// Renders the view from the true robot pose `pose` with the torso tilted and the head turned as
+  /// `posture` says (the camera of hal::CameraPose::from_posture) into bgr(), and the ground truth
+  /// into truth(). Never allocates.
+  void render(const hal::Pose2& pose, const hal::CameraPosture& posture) noexcept;
+  /// An upright torso: render(pose, {{}, head}).
+  void render(const hal::Pose2& pose, const hal::HeadJoints& head) noexcept {
+    render(pose, hal::CameraPosture{hal::BodyTilt{}, head});
+  }
 
   /// BGR8, rows top to bottom, stride = 3 · width, no padding.
   [[nodiscard]] std::span<const std::uint8_t> bgr() const noexcept { return bgr_; }

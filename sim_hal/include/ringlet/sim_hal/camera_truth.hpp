@@ -41,6 +41,7 @@ struct BallTruth {
 struct FrameTruth {
   hal::Pose2 pose{};        // true robot pose at capture
   hal::HeadJoints head{};   // head joints at capture
+  hal::BodyTilt body{};     // torso tilt at capture (the camera follows the whole chain)
   std::vector<LineRunTruth> lines;  // in marking order, runs along each marking from end a to b
   bool lines_truncated = false;     // more runs than the capacity reserved; the rest were dropped
   std::vector<RingTruth> rings;     // one per World::rings entry

@@ -2,8 +2,8 @@
 // The simulated head camera as a hal::Camera. Rendering a frame takes milliseconds, so it never
 // runs inside a real-time task: a render thread owned by the camera does it. The lockstep contract
 // keeps runs bit-identical whatever the host's speed:
-//   - camera tick k is the SimRobot::read() that ends step k·every_n_frames; the true pose and
-//     head joints of that instant are handed to the render thread (a capture);
+//   - camera tick k is the SimRobot::read() that ends step k·every_n_frames; the true pose, torso
+//     tilt and head joints of that instant are handed to the render thread (a capture);
 //   - the frame captured at tick k becomes the latest frame at tick k+1 (one camera period of
 //     latency, like a real camera's exposure and readout); if the render thread has not finished
 //     it by then, that read() waits for it;
@@ -46,7 +46,7 @@ class SimCamera final : public hal::Camera {
   bool grab_latest(hal::FrameView& out) noexcept override;
 
   /// Called by SimRobot::read() after every step, with the state at the end of step `step`.
-  void on_step(std::uint64_t step, hal::Nanos time, const hal::Pose2& pose, const hal::HeadJoints& head) noexcept;
+  void on_step(std::uint64_t step, hal::Nanos time, const hal::Pose2& pose, const hal::CameraPosture& posture) noexcept;
 
   /// Ground truth of the newest delivered frame (what grab_latest() returns now); null before the
   /// first delivery. Valid until the next on_step().
@@ -65,7 +65,7 @@ class SimCamera final : public hal::Camera {
   struct Job {
     int slot = -1;
     hal::Pose2 pose{};
-    hal::HeadJoints head{};
+    hal::CameraPosture posture{};
   };
 
   void render_loop() noexcept;

@@ -17,6 +17,20 @@
 
 namespace ringlet::sim_hal {
 
+/// The torso's tilt (hal::BodyTilt conventions, rad): a static lean, plus a sway while driving, as
+/// a walking NAO's torso rocks with its steps. The sway's amplitude grows with the speed
+/// (|v| / limits.max_speed); roll swings once per `sway_period`, pitch twice (one step each side),
+/// from a phase drawn from the seed (a hash, not the noise RNG: the other sensors' noise stays the
+/// same whether or not the torso sways). The inertial unit reports the true tilt (no noise, no
+/// bias) and the camera renders from it. All zero by default: an upright robot.
+struct SimBodyTilt {
+  double pitch = 0.0;        // rad, positive leans forward
+  double roll = 0.0;         // rad, positive leans right
+  double sway_pitch = 0.0;   // rad, amplitude at full speed
+  double sway_roll = 0.0;    // rad, amplitude at full speed
+  double sway_period = 1.0;  // s, one left-right cycle
+};
+
 struct SimConfig {
   hal::Nanos period{10'000'000};  // one executive period per read()
   std::uint64_t seed = 1;
@@ -30,6 +44,7 @@ struct SimConfig {
   double laser_sigma = 0.0;       // m, Gaussian noise on valid ranges
   double head_max_rate = 4.0;     // rad/s the simulated head joints can move
   double battery_volts = 12.6;    // start voltage; drains slowly with distance driven
+  SimBodyTilt body{};             // the torso's tilt (upright by default)
   SimCameraConfig camera{};       // off by default: rendering needs a thread and a few ms a frame
 };
 
@@ -61,6 +76,8 @@ class SimRobot : public hal::Robot, private hal::Sensors, private hal::Actuators
   [[nodiscard]] std::uint64_t steps() const noexcept { return steps_; }
   [[nodiscard]] std::uint64_t collisions() const noexcept { return collisions_; }  // contact events
   [[nodiscard]] double distance_travelled() const noexcept { return distance_; }
+  /// The torso's true tilt now (what the inertial unit reports and the camera renders from).
+  [[nodiscard]] const hal::BodyTilt& true_body_tilt() const noexcept { return body_; }
   [[nodiscard]] const SimConfig& config() const noexcept { return config_; }
   /// Where the world's ball really is in the robot frame (none when the world has no ball).
   [[nodiscard]] std::optional<hal::RobotPoint> true_ball_in_robot_frame() const noexcept;
@@ -89,6 +106,8 @@ class SimRobot : public hal::Robot, private hal::Sensors, private hal::Actuators
   std::normal_distribution<double> unit_normal_{0.0, 1.0};
   CarState state_{};
   hal::HeadJoints head_{};
+  hal::BodyTilt body_{};
+  double sway_phase_ = 0.0;  // rad, from the seed
   hal::ActuatorCommand command_{};
   std::atomic<bool> safe_{false};
   bool in_contact_ = false;

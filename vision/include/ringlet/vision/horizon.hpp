@@ -1,8 +1,9 @@
 #pragma once
 // Where the ground ends in the image: per column, the first row whose viewing ray points down at
-// the ground. The horizon is the image of the ground plane's vanishing line for the current head
-// pose; with a pan-tilt head (no roll) it is a horizontal row, but it is computed per column from
-// camera_geometry so a rolled camera would work too.
+// the ground. The horizon is the image of the ground plane's vanishing line for the camera pose of
+// the whole chain (torso tilt, head yaw and pitch: hal::CameraPose::from_body). With an upright
+// torso it is a horizontal row; a rolled torso slants it by about the roll angle (positive roll,
+// leaning right, raises its right end), so it is computed per column.
 #include <span>
 
 #include "ringlet/hal/camera_geometry.hpp"

@@ -72,6 +72,7 @@ struct VisionResult {
   VisionStatus status = VisionStatus::kOk;
   std::uint64_t sequence = 0;
   hal::Nanos capture_time{0};
+  hal::CameraPosture posture{};  // the torso tilt and head joints the frame was processed with
   int degrade_level = 0;
   int horizon_row = 0;  // first ground row (minimum over columns), image height when none
   std::array<FieldLine, kMaxLines> lines{};
@@ -95,8 +96,15 @@ class VisionPipeline {
   /// One frame. `degrade_level` is clamped to [0, kDegradeLevels). With a stopwatch in the
   /// deadline, stages are timed and the deadline is checked between stages and between RANSAC
   /// trials; a stage that would start after the deadline is skipped and reported.
+  /// `posture` is the torso's tilt and the head joints at the frame's capture time: the camera
+  /// pose, and so the horizon and every ground point, comes from the whole chain.
+  const VisionResult& process(const hal::FrameView& frame, const hal::CameraPosture& posture,
+                              const Deadline& deadline = {}, int degrade_level = 0) noexcept;
+  /// An upright torso (no inertial data): process(frame, {{}, head}, ...).
   const VisionResult& process(const hal::FrameView& frame, const hal::HeadJoints& head, const Deadline& deadline = {},
-                              int degrade_level = 0) noexcept;
+                              int degrade_level = 0) noexcept {
+    return process(frame, hal::CameraPosture{hal::BodyTilt{}, head}, deadline, degrade_level);
+  }
 
   [[nodiscard]] const VisionResult& result() const noexcept { return result_; }
   [[nodiscard]] const ClassImage& classes() const noexcept { return classes_; }

@@ -29,7 +29,9 @@ class LogError : public std::runtime_error {
 };
 
 inline constexpr std::string_view kRobotLogMagic{"RLHALLOG", 8};
-inline constexpr std::uint32_t kRobotLogVersion = 1;
+/// Version 2 added the inertial unit (the torso's tilt) to the sensor record; a version 1 log
+/// cannot be replayed (vision would see an upright torso the robot may not have had).
+inline constexpr std::uint32_t kRobotLogVersion = 2;
 inline constexpr std::size_t kMaxLogNoteBytes = 4096;
 /// The largest camera frame a log may hold: kMaxImagePixels at 3 bytes per pixel (48 MiB).
 inline constexpr std::size_t kMaxLogCameraFrameBytes = kMaxImagePixels * 3;
@@ -45,7 +47,7 @@ enum class RecordKind : std::uint8_t {
 
 // Byte sizes of the payloads (after the 5-byte record header: u8 kind, u32 payload size).
 inline constexpr std::size_t kRecordHeaderBytes = 5;
-inline constexpr std::size_t kSensorFixedBytes = 149;  // + 5 per beam (f32 range, u8 valid)
+inline constexpr std::size_t kSensorFixedBytes = 174;  // + 5 per beam (f32 range, u8 valid)
 inline constexpr std::size_t kBytesPerBeam = 5;
 inline constexpr std::size_t kBallPayloadBytes = 34;
 inline constexpr std::size_t kCameraFixedBytes = 37;  // + stride * height pixel bytes

@@ -1,8 +1,8 @@
 #pragma once
 // Camera → vision pipeline → whiteboard (FieldLines, BallBelief). Runs when the table says (every
-// camera period); processes the newest frame once, with the head posture of its capture time read
-// back from the whiteboard's HeadPosture generations, inside the task's deadline (and at the
-// executive's degrade level).
+// camera period); processes the newest frame once, with the camera posture of its capture time
+// (head joints and torso tilt) read back from the whiteboard's HeadPosture generations, inside the
+// task's deadline (and at the executive's degrade level).
 #include <memory>
 
 #include "ringlet/executive/task.hpp"
@@ -37,7 +37,7 @@ class VisionTask final : public executive::Task {
   [[nodiscard]] hal::Nanos modelled_cost() const noexcept override { return cost_; }
 
  private:
-  [[nodiscard]] hal::HeadJoints head_at(hal::Nanos when) const noexcept;
+  [[nodiscard]] hal::CameraPosture posture_at(hal::Nanos when) const noexcept;
 
   hal::Camera& camera_;
   std::unique_ptr<vision::VisionPipeline> pipeline_;
