@@ -293,6 +293,7 @@ class WorldParser {
     } else if (word(0) == "spl") {
       result.style = LookStyle::kSpl;
       result.ball = BallLook::kBlackWhite;
+      result.drift = 0.04;  // a real camera's auto exposure and white balance hunt a little
     } else {
       fail(s.line, prefix(s) + "style must be plain or spl, got '" + as_written(s.args[0]) + "'");
     }
