@@ -50,8 +50,9 @@ void CameraRenderer::post_process() noexcept {
     }
   }
   if (!(look.noise > 0.0)) return;
-  // Triangular noise per channel: the sum of two 5-bit fields of one hash per pixel, centred.
-  const double amplitude = look.noise / 31.0;
+  // Triangular noise per channel: the sum of two 5-bit fields of one hash per pixel, centred,
+  // times the amplitude in 1/256 grey levels per step (integers: cheap, and exact everywhere).
+  const int amplitude = static_cast<int>(look.noise * (256.0 / 31.0) + 0.5);
   const std::uint32_t frame_seed = seed_ ^ detail::hash2(static_cast<int>(frame_ & 0x7fffffffU), 0x5e05, 0x9a1dU);
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
   std::uint8_t* p = bgr_.data();
@@ -60,7 +61,8 @@ void CameraRenderer::post_process() noexcept {
     for (int c = 0; c < 3; ++c) {
       const int a = static_cast<int>((h >> (10 * c)) & 31U);
       const int b = static_cast<int>((h >> (10 * c + 5)) & 31U);
-      p[c] = detail::to_byte(static_cast<double>(p[c]) + amplitude * static_cast<double>(a + b - 31));
+      const int value = (static_cast<int>(p[c]) * 256 + amplitude * (a + b - 31) + 128) >> 8;  // floor: C++20
+      p[c] = static_cast<std::uint8_t>(std::clamp(value, 0, 255));
     }
   }
 }

@@ -35,19 +35,22 @@ class SplShader {
  public:
   SplShader(const CameraLook& look, const Lighting& light, std::uint32_t seed, const std::array<double, 3>& gain) noexcept
       : look_(look), light_(light), seed_(seed), gain_(gain),
-        sun_cos_(std::cos(light.sun_angle)), sun_sin_(std::sin(light.sun_angle)) {}
+        sun_cos_(std::cos(light.sun_angle)), sun_sin_(std::sin(light.sun_angle)),
+        base_light_(scaled(tint(look.light), light.brightness)) {}
 
   /// Carpet (grass-like fibres, blade hue, slow mottling) or paint at ground point (x, y).
   void ground(std::uint8_t* out, double x, double y, bool paint) const noexcept {
     const double tex = light_.texture;
-    const double fibre = 2.0 * unit(hash2(fast_floor(x * 250.0), fast_floor(y * 250.0), seed_)) - 1.0;
+    // One hash per 4 mm cell: its high bits are the fibre's brightness, its low byte the blade's hue.
+    const std::uint32_t cell = hash2(fast_floor(x * 250.0), fast_floor(y * 250.0), seed_);
+    const double fibre = 2.0 * unit(cell) - 1.0;
     const double coarse = 2.0 * value_noise(x * (1.0 / 1.5), y * (1.0 / 1.5), seed_ ^ 0x51ed270bU) - 1.0;
     const double bright = 1.0 + 0.75 * tex * coarse;
     if (paint) {
       emit(out, kPaint, illumination(x, y), bright * (1.0 + 0.3 * tex * fibre));
       return;
     }
-    const double blade = 2.0 * unit(hash2(fast_floor(x * 120.0), fast_floor(y * 90.0), seed_ ^ 0x6b1adeU)) - 1.0;
+    const double blade = static_cast<double>(cell & 0xffU) * (2.0 / 255.0) - 1.0;
     const double w = look_.carpet_warmth;
     const double hue = 0.6 * tex * blade;  // yellower or bluer blades
     const Rgb carpet{(58.0 - 8.0 * w) * (1.0 - hue), 122.0, (98.0 + 22.0 * w) * (1.0 + hue)};
@@ -73,7 +76,7 @@ class SplShader {
       return;
     }
     const double h1 = unit(hash2(fast_floor(d.x * inv * 40.0), fast_floor(d.y * inv * 40.0), seed_ ^ 0x9e3779b9U));
-    emit(out, Rgb{122.0, 120.0, 126.0}, tint(), light_.brightness * (0.7 + 0.45 * h1) * (1.0 - 0.35 * up));
+    emit(out, Rgb{122.0, 120.0, 126.0}, tint(look_.light), light_.brightness * (0.7 + 0.45 * h1) * (1.0 - 0.35 * up));
   }
 
   /// A ball point p with unit normal n; `axes` turns the pattern. Black-and-white or orange.
@@ -121,9 +124,11 @@ class SplShader {
  private:
   static constexpr Rgb kPaint{226.0, 232.0, 230.0};
 
+  static Rgb scaled(const Rgb& c, double s) noexcept { return {c.b * s, c.g * s, c.r * s}; }
+
   /// The light's colour before any window patch: fluorescent tubes are a little green-blue.
-  [[nodiscard]] Rgb tint() const noexcept {
-    switch (look_.light) {
+  [[nodiscard]] static Rgb tint(LightKind kind) noexcept {
+    switch (kind) {
       case LightKind::kFluorescent: return {1.05, 1.02, 0.95};
       case LightKind::kDaylight: return {0.88, 0.88, 0.88};  // the hall is dimmer than the patches
       case LightKind::kBacklight: return {1.0, 1.0, 1.0};
@@ -131,12 +136,11 @@ class SplShader {
     return {1.0, 1.0, 1.0};
   }
 
-  /// Light falling on ground point (x, y): the tint, the lamps' slow unevenness, and with daylight
-  /// the warm patches of the windows (rectangles from two soft square waves across each other).
+  /// Light falling on ground point (x, y): the tint (the lamps' unevenness is the carpet's slow
+  /// mottling), and with daylight the warm patches of the windows (rectangles from two soft square
+  /// waves across each other).
   [[nodiscard]] Rgb illumination(double x, double y) const noexcept {
-    const Rgb t = tint();
-    const double lamps = light_.brightness * (1.0 + 0.05 * (2.0 * value_noise(x * (1.0 / 3.0), y * (1.0 / 3.0), seed_ ^ 0x1a3bU) - 1.0));
-    Rgb out{t.b * lamps, t.g * lamps, t.r * lamps};
+    Rgb out = base_light_;
     if (look_.light == LightKind::kDaylight && light_.sun_strength > 0.0) {
       const double across = (x * sun_cos_ - y * sun_sin_ - light_.sun_phase) / light_.sun_period;
       const double along = (x * sun_sin_ + y * sun_cos_) / (1.7 * light_.sun_period);
@@ -172,6 +176,7 @@ class SplShader {
   std::array<double, 3> gain_;
   double sun_cos_;
   double sun_sin_;
+  Rgb base_light_;  // tint × brightness
   BallPattern pattern_;
 };
 

@@ -4,6 +4,7 @@
 #include "nao_model.hpp"
 
 #include <array>
+#include <cmath>
 
 namespace ringlet::sim_hal::detail {
 namespace {
@@ -83,13 +84,31 @@ const std::array<Vec3, kParts.size() * 8> kHull = make_hull();
 
 void ray_nao(const Vec3& o, const Vec3& d, NaoHit& hit) noexcept {
   hit.t = kNoHit3;
-  const Circle bound{{0.0, 0.0}, kNaoReach, kNaoHeight, ObstacleKind::kRobot};
-  if (!(ray_cylinder(o, d, bound) < kNoHit3)) {
-    // The camera may stand inside the bound only if it is over the robot; nothing to see then.
-    return;
+  // Where the ray runs inside the bounding cylinder, and the heights it spans there: only parts
+  // reaching into that height band can be hit (a near-level ray tests a few parts, not 22).
+  double z_lo = 0.0;
+  double z_hi = kNaoHeight;
+  const double a = d.x * d.x + d.y * d.y;
+  if (a > 0.0) {
+    const double b = o.x * d.x + o.y * d.y;
+    const double c = o.x * o.x + o.y * o.y - kNaoReach * kNaoReach;
+    const double disc = b * b - a * c;
+    if (disc < 0.0) return;
+    const double root = std::sqrt(disc);
+    const double t0 = (-b - root) / a;
+    const double t1 = (-b + root) / a;
+    if (!(t1 > 0.0)) return;
+    const double za = o.z + (t0 > 0.0 ? t0 : 0.0) * d.z;
+    const double zb = o.z + t1 * d.z;
+    z_lo = za < zb ? za : zb;
+    z_hi = za < zb ? zb : za;
+    if (z_hi < 0.0 || z_lo > kNaoHeight) return;
+  } else if (o.x * o.x + o.y * o.y > kNaoReach * kNaoReach) {
+    return;  // a vertical ray beside the robot
   }
   for (std::size_t i = 0; i < kParts.size(); ++i) {
     const Part& part = kParts[i];
+    if (part.centre.z + part.radii.z < z_lo || part.centre.z - part.radii.z > z_hi) continue;
     Vec3 normal{};
     double t = kNoHit3;
     if (part.box) {
