@@ -18,7 +18,6 @@
 #include <CLI/CLI.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -203,6 +202,11 @@ std::vector<Circle> random_robots(const World& scene, const hal::Pose2& pose, do
     const Vec2 p = around_view(pose, head_yaw, rnd(0.5, 6.0), 38.0, rnd);
     const double dx = p.x - pose.x, dy = p.y - pose.y;
     if (!free_spot(probe, p, 0.16) || dx * dx + dy * dy < 0.45 * 0.45) continue;
+    // A robot standing on a ball would hide it inside its feet.
+    const auto on_ball = [&](const Ball& b) { return std::hypot(b.position.x - p.x, b.position.y - p.y) <= 0.25; };
+    if ((scene.ball && on_ball(*scene.ball)) || std::any_of(scene.extra_balls.begin(), scene.extra_balls.end(), on_ball)) {
+      continue;
+    }
     const Circle c{p, 0.15, 0.574, ObstacleKind::kRobot};
     probe.circles.push_back(c);
     robots.push_back(c);
