@@ -57,7 +57,7 @@ struct RobotTruth {
   double distance = 0.0;          // m, to that point
   double bearing = 0.0;           // rad, of that point (left positive)
   double heading = 0.0;           // rad, where it faces, world frame (geometry.hpp convention)
-  int team = 0;                   // jersey colour index (camera_renderer.cpp's kJerseys)
+  int team = 0;                   // jersey: 0 blue, 1 red, 2 yellow, 3 black (src/camera_shading.hpp)
   bool in_front = false;          // its foot point is in front of the camera
   ImageBox box{};                 // the projection of its whole body (may extend past the image)
   ImageBox pixels{};              // the pixels its silhouette covers inside the image, hidden or not
