@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
+#include "camera_shading.hpp"
+#include "nao_model.hpp"
 #include "render_math.hpp"
 #include "vec2_math.hpp"
 
@@ -19,6 +22,7 @@ using detail::fast_floor;
 using detail::hash2;
 using detail::scale;
 using detail::sub;
+using detail::to_byte;
 using detail::unit;
 using hal::Vec3;
 
@@ -43,10 +47,6 @@ constexpr Colour kBall{20.0, 115.0, 245.0};
 /// Where the jersey band sits on a robot, as a fraction of its height.
 constexpr double kJerseyLow = 0.5;
 constexpr double kJerseyHigh = 0.62;
-
-std::uint8_t to_byte(double v) noexcept {
-  return static_cast<std::uint8_t>(v <= 0.0 ? 0 : (v >= 255.0 ? 255 : static_cast<int>(v + 0.5)));
-}
 
 void put(std::uint8_t* out, const Colour& c, double light) noexcept {
   out[0] = to_byte(c.b * light);
@@ -75,12 +75,50 @@ CameraRenderer::CameraRenderer(World world, const CameraSpec& spec, std::uint64_
       spec_(spec),
       seed_(static_cast<std::uint32_t>(seed ^ (seed >> 32))),
       bgr_(static_cast<std::size_t>(spec.intrinsics.width) * static_cast<std::size_t>(spec.intrinsics.height) * 3U),
-      labels_(static_cast<std::size_t>(spec.intrinsics.width) * static_cast<std::size_t>(spec.intrinsics.height)),
-      boxes_(world_.circles.size() + 1),
-      row_active_(world_.circles.size() + 1) {
+      labels_(static_cast<std::size_t>(spec.intrinsics.width) * static_cast<std::size_t>(spec.intrinsics.height)) {
   build_grid();
-  truth_.lines.reserve(world_.markings.size() * (world_.circles.size() + 3) + 16);
+  setup_objects();
+  truth_.lines.reserve(world_.markings.size() * (world_.circles.size() + balls_.size() + 2) + 16);
   truth_.rings.resize(world_.rings.size());
+}
+
+void CameraRenderer::setup_objects() {
+  if (world_.ball) balls_.push_back(*world_.ball);
+  balls_.insert(balls_.end(), world_.extra_balls.begin(), world_.extra_balls.end());
+  const std::size_t objects = world_.circles.size() + balls_.size();
+  boxes_.resize(objects);
+  row_active_.resize(objects);
+  stats_.resize(objects);
+  const auto& k = spec_.intrinsics;
+  line_buffer_.resize(static_cast<std::size_t>(std::max(k.width, k.height)) * 3U);
+  // Each robot faces its own way and wears one of the jerseys, both fixed by the seed.
+  robot_frames_.resize(world_.circles.size());
+  std::size_t robots = 0;
+  for (std::size_t i = 0; i < world_.circles.size(); ++i) {
+    const Circle& c = world_.circles[i];
+    RobotFrame& f = robot_frames_[i];
+    const std::uint32_t h = hash2(static_cast<int>(i), 0x6e616f, seed_);
+    f.heading = hal::wrap_angle(2.0 * std::numbers::pi * unit(h));
+    f.sin_h = std::sin(f.heading);
+    f.cos_h = std::cos(f.heading);
+    f.scale = c.height / detail::kNaoHeight;
+    f.team = static_cast<std::uint8_t>(hash2(static_cast<int>(i), 0x7465616d, seed_) % detail::kJerseyCount);
+    if (c.kind == ObstacleKind::kRobot) ++robots;
+  }
+  // Each ball's pattern is turned by three angles of its own.
+  ball_axes_.resize(balls_.size());
+  for (std::size_t b = 0; b < balls_.size(); ++b) {
+    const double a = 2.0 * std::numbers::pi * unit(hash2(static_cast<int>(b), 1, seed_ ^ 0xba11U));
+    const double e = 2.0 * std::numbers::pi * unit(hash2(static_cast<int>(b), 2, seed_ ^ 0xba11U));
+    const double r = 2.0 * std::numbers::pi * unit(hash2(static_cast<int>(b), 3, seed_ ^ 0xba11U));
+    const double ca = std::cos(a), sa = std::sin(a), ce = std::cos(e), se = std::sin(e), cr = std::cos(r), sr = std::sin(r);
+    // Rz(a) · Rx(e) · Rz(r), rows = the ball's axes in the world.
+    ball_axes_[b] = {Vec3{ca * cr - sa * ce * sr, -ca * sr - sa * ce * cr, sa * se},
+                     Vec3{sa * cr + ca * ce * sr, -sa * sr + ca * ce * cr, -ca * se},
+                     Vec3{se * sr, se * cr, ce}};
+  }
+  truth_.balls.reserve(balls_.size());
+  truth_.robots.reserve(robots);
 }
 
 void CameraRenderer::build_grid() {
@@ -131,9 +169,47 @@ void CameraRenderer::render(const hal::Pose2& pose, const hal::CameraPosture& po
   truth_.pose = pose;
   truth_.head = posture.head;
   truth_.body = posture.body;
+  compute_camera_gains();
   compute_obstacle_boxes();
   render_pixels();
   compute_truth();
+  if (world_.look.style == LookStyle::kSpl) post_process();
+  ++frame_;
+}
+
+bool CameraRenderer::nao_robot(std::size_t circle) const noexcept {
+  return world_.look.style == LookStyle::kSpl && world_.circles[circle].kind == ObstacleKind::kRobot;
+}
+
+double CameraRenderer::hit_object(std::size_t i, const Vec3& o, const Vec3& d) const noexcept {
+  const std::size_t circles = world_.circles.size();
+  if (i >= circles) {
+    const Ball& b = balls_[i - circles];
+    return detail::ray_sphere(o, d, Vec3{b.position.x, b.position.y, b.radius}, b.radius);
+  }
+  if (!nao_robot(i)) return detail::ray_cylinder(o, d, world_.circles[i]);
+  detail::NaoHit hit;
+  detail::ray_nao(detail::to_robot_model(world_.circles[i], robot_frames_[i].sin_h, robot_frames_[i].cos_h,
+                                         robot_frames_[i].scale, o, true),
+                  detail::to_robot_model(world_.circles[i], robot_frames_[i].sin_h, robot_frames_[i].cos_h,
+                                         robot_frames_[i].scale, d, false),
+                  hit);
+  return hit.t;
+}
+
+void CameraRenderer::compute_camera_gains() noexcept {
+  const CameraLook& look = world_.look;
+  gain_ = {1.0, 1.0, 1.0};
+  if (look.style != LookStyle::kSpl) return;
+  // Auto exposure and white balance hunt slowly: smooth noise over the frame count.
+  const double x = static_cast<double>(frame_) / look.drift_frames;
+  const auto drift = [&](std::uint32_t salt, double amount) {
+    return 1.0 + amount * (2.0 * detail::value_noise(x, 0.5, seed_ ^ salt) - 1.0);
+  };
+  const double e = look.exposure * drift(0xe1U, look.drift);
+  gain_[1] = e;
+  gain_[2] = e * look.white_red * drift(0x3edU, 0.5 * look.drift);
+  gain_[0] = e * look.white_blue * drift(0xb1eU, 0.5 * look.drift);
 }
 
 void CameraRenderer::compute_obstacle_boxes() noexcept {
@@ -170,15 +246,15 @@ void CameraRenderer::compute_obstacle_boxes() noexcept {
   };
   for (std::size_t i = 0; i < world_.circles.size(); ++i) {
     const Circle& c = world_.circles[i];
-    boxes_[i] = box_of(c.centre.x - c.radius, c.centre.y - c.radius, c.centre.x + c.radius, c.centre.y + c.radius,
-                       c.height);
+    // A NAO's arms reach a little past a 0.15 m circle: box the larger of the two.
+    const double r = nao_robot(i) ? std::max(c.radius, detail::kNaoReach * robot_frames_[i].scale) : c.radius;
+    boxes_[i] = box_of(c.centre.x - r, c.centre.y - r, c.centre.x + r, c.centre.y + r, c.height);
   }
-  ScreenBox& ball_box = boxes_.back();
-  ball_box = ScreenBox{};
-  if (world_.ball) {
-    const Ball& b = *world_.ball;
-    ball_box = box_of(b.position.x - b.radius, b.position.y - b.radius, b.position.x + b.radius,
-                      b.position.y + b.radius, 2.0 * b.radius);
+  for (std::size_t b = 0; b < balls_.size(); ++b) {
+    const Ball& ball = balls_[b];
+    boxes_[world_.circles.size() + b] = box_of(ball.position.x - ball.radius, ball.position.y - ball.radius,
+                                               ball.position.x + ball.radius, ball.position.y + ball.radius,
+                                               2.0 * ball.radius);
   }
 }
 
@@ -187,22 +263,27 @@ void CameraRenderer::render_pixels() noexcept {
   const int width = k.width;
   const int height = k.height;
   const Lighting& light = world_.lighting;
+  const bool spl = world_.look.style == LookStyle::kSpl;
+  const detail::SplShader shader(world_.look, light, seed_, gain_);
   const double sun_cos = std::cos(light.sun_angle);
   const double sun_sin = std::sin(light.sun_angle);
   const double texture = light.texture;
   const Vec3 step = scale(1.0 / k.fx, axes_[0]);
   const std::size_t circles = world_.circles.size();
-  const std::size_t ball_index = circles;
-  const bool has_ball = world_.ball.has_value();
-  const Vec3 ball_centre = has_ball ? Vec3{world_.ball->position.x, world_.ball->position.y, world_.ball->radius}
-                                    : Vec3{};
-  const double ball_radius = has_ball ? world_.ball->radius : 0.0;
   const Grid& g = grid_;
   const double inv_cell = 1.0 / g.cell;
   const std::uint32_t coarse_seed = seed_ ^ 0x51ed270bU;
   const std::uint32_t background_seed = seed_ ^ 0x9e3779b9U;
-  ball_pixels_ = 0;
-  ball_pixels_shown_ = 0;
+  for (ObjectStats& st : stats_) st = ObjectStats{};
+  const auto extend = [](int& lo, int& hi, int x) {
+    if (hi < lo) {
+      lo = x;
+      hi = x;
+    } else {
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+  };
 
   for (int v = 0; v < height; ++v) {
     std::size_t active = 0;
@@ -217,6 +298,7 @@ void CameraRenderer::render_pixels() noexcept {
       const Vec3 d{base.x + fu * step.x, base.y + fu * step.y, base.z + fu * step.z};
       double t_best = detail::kNoHit3;
       int hit = kNothing;
+      detail::NaoHit nao_best;
       if (d.z < 0.0) {
         t_best = -origin_.z / d.z;
         hit = kGround;
@@ -225,16 +307,33 @@ void CameraRenderer::render_pixels() noexcept {
         const std::uint32_t i = row_active_[a];
         if (u < boxes_[i].u0 || u > boxes_[i].u1) continue;
         double t = detail::kNoHit3;
-        if (i == ball_index) {
-          t = detail::ray_sphere(origin_, d, ball_centre, ball_radius);
-          if (t < detail::kNoHit3) ++ball_pixels_;
+        detail::NaoHit nao;
+        if (i < circles && nao_robot(i)) {
+          const RobotFrame& f = robot_frames_[i];
+          const Circle& c = world_.circles[i];
+          detail::ray_nao(detail::to_robot_model(c, f.sin_h, f.cos_h, f.scale, origin_, true),
+                          detail::to_robot_model(c, f.sin_h, f.cos_h, f.scale, d, false), nao);
+          t = nao.t;
         } else {
-          t = detail::ray_cylinder(origin_, d, world_.circles[i]);
+          t = hit_object(i, origin_, d);
+        }
+        if (t < detail::kNoHit3) {
+          ObjectStats& st = stats_[i];
+          ++st.hits;
+          extend(st.hit_u0, st.hit_u1, u);
+          extend(st.hit_v0, st.hit_v1, v);
         }
         if (t < t_best) {
           t_best = t;
           hit = static_cast<int>(i);
+          nao_best = nao;
         }
+      }
+      if (hit >= 0) {
+        ObjectStats& st = stats_[static_cast<std::size_t>(hit)];
+        ++st.shown;
+        extend(st.shown_u0, st.shown_u1, u);
+        extend(st.shown_v0, st.shown_v1, v);
       }
 
       if (hit == kGround) {
@@ -242,9 +341,13 @@ void CameraRenderer::render_pixels() noexcept {
         const double y = origin_.y + t_best * d.y;
         const bool on_carpet = x >= world_.min.x && x <= world_.max.x && y >= world_.min.y && y <= world_.max.y;
         if (!on_carpet) {
+          *label = PixelLabel::kFloor;
+          if (spl) {
+            shader.floor(out, x, y);
+            continue;
+          }
           const double n = unit(hash2(fast_floor(x * 20.0), fast_floor(y * 20.0), seed_));
           put(out, kFloor, light.brightness * (0.92 + 0.16 * n));
-          *label = PixelLabel::kFloor;
           continue;
         }
         bool paint = false;
@@ -263,48 +366,70 @@ void CameraRenderer::render_pixels() noexcept {
             paint = detail::segment_distance_squared(Vec2{x, y}, mk.a, mk.b) <= half * half;
           }
         }
+        *label = paint ? PixelLabel::kMarking : PixelLabel::kCarpet;
+        if (spl) {
+          shader.ground(out, x, y, paint);
+          continue;
+        }
         // Carpet: fine fibre noise on a 2 cm lattice, a slow 1.5 m mottling, then the sun.
         const double fine = 2.0 * unit(hash2(fast_floor(x * 50.0), fast_floor(y * 50.0), seed_)) - 1.0;
         const double coarse = 2.0 * detail::value_noise(x * (1.0 / 1.5), y * (1.0 / 1.5), coarse_seed) - 1.0;
         const double lit = light.brightness * (1.0 + 0.75 * texture * coarse) * sun_factor(light, sun_cos, sun_sin, x, y);
         if (paint) {
           put(out, kPaint, lit * (1.0 + 0.3 * texture * fine));
-          *label = PixelLabel::kMarking;
         } else {
           put(out, kCarpet, lit * (1.0 + texture * fine));
-          *label = PixelLabel::kCarpet;
         }
       } else if (hit == kNothing) {
+        *label = PixelLabel::kBackground;
+        if (spl) {
+          shader.background(out, d);
+          continue;
+        }
         // Above the horizon: the hall's walls and crowd, blocky variation fixed to the direction.
         const double inv = 1.0 / std::sqrt(dot(d, d));
         const double h1 = unit(hash2(fast_floor(d.x * inv * 40.0), fast_floor(d.y * inv * 40.0), background_seed));
         const double up = d.z * inv;  // 0 at the horizon, 1 straight up
         put(out, kBackground, light.brightness * (0.75 + 0.4 * h1) * (1.0 - 0.35 * up));
-        *label = PixelLabel::kBackground;
-      } else if (static_cast<std::size_t>(hit) == ball_index) {
-        ++ball_pixels_shown_;
-        const Vec3 p = add(origin_, scale(t_best, d));
-        const double nz = (p.z - ball_centre.z) / ball_radius;  // lit from above
-        put(out, kBall, light.brightness * (0.55 + 0.45 * nz));
+      } else if (static_cast<std::size_t>(hit) >= circles) {
         *label = PixelLabel::kBall;
+        const std::size_t b = static_cast<std::size_t>(hit) - circles;
+        const Ball& ball = balls_[b];
+        const Vec3 centre{ball.position.x, ball.position.y, ball.radius};
+        const Vec3 p = add(origin_, scale(t_best, d));
+        if (spl || world_.look.ball == BallLook::kBlackWhite) {
+          const Vec3 n = scale(1.0 / ball.radius, sub(p, centre));
+          shader.ball(out, p, n, ball_axes_[b], world_.look.ball == BallLook::kBlackWhite, spl);
+          continue;
+        }
+        const double nz = (p.z - centre.z) / ball.radius;  // lit from above
+        put(out, kBall, light.brightness * (0.55 + 0.45 * nz));
       } else {
         const Circle& c = world_.circles[static_cast<std::size_t>(hit)];
         const Vec3 p = add(origin_, scale(t_best, d));
+        *label = c.kind == ObstacleKind::kPost ? PixelLabel::kPost
+                 : c.kind == ObstacleKind::kRobot ? PixelLabel::kRobot
+                                                  : PixelLabel::kObstacle;
+        if (spl) {
+          if (nao_robot(static_cast<std::size_t>(hit))) {
+            const RobotFrame& f = robot_frames_[static_cast<std::size_t>(hit)];
+            shader.nao(out, p, detail::robot_to_world_direction(f.sin_h, f.cos_h, nao_best.normal), nao_best.material,
+                       f.team);
+          } else {
+            shader.cylinder(out, p, c);
+          }
+          continue;
+        }
         // Lit from one side (a fixed direction in the world), the top cap fully.
         const double nx = (p.x - c.centre.x) / c.radius;
         const double ny = (p.y - c.centre.y) / c.radius;
         const bool cap = p.z >= c.height - 1e-9;
         const double shade = cap ? 1.0 : 0.85 + 0.15 * (0.6 * nx + 0.8 * ny);
         Colour colour = kObstacle;
-        *label = PixelLabel::kObstacle;
-        if (c.kind == ObstacleKind::kPost) {
-          colour = kPost;
-          *label = PixelLabel::kPost;
-        }
+        if (c.kind == ObstacleKind::kPost) colour = kPost;
         if (c.kind == ObstacleKind::kRobot) {
           const double rel = p.z / c.height;
           colour = (!cap && rel >= kJerseyLow && rel <= kJerseyHigh) ? kRobotJersey : kRobotBody;
-          *label = PixelLabel::kRobot;
         }
         put(out, colour, light.brightness * shade);
       }

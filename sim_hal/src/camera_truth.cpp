@@ -2,9 +2,11 @@
 // middle; a sample counts as visible when it projects inside the image and nothing (an obstacle or
 // the ball) stands between it and the camera. Ground points in front of a camera that is above
 // the ground are always below the horizon, so that needs no separate test.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "nao_model.hpp"
 #include "render_math.hpp"
 #include "ringlet/sim_hal/camera_renderer.hpp"
 
@@ -38,14 +40,7 @@ bool CameraRenderer::sample_visible(const Vec3& ground, hal::Pixel& px) const no
     const ScreenBox& b = boxes_[i];
     if (iu < b.u0 || iu > b.u1 || iv < b.v0 || iv > b.v1) continue;
     // rel runs from the camera to the sample: a hit with t < 1 lies in between.
-    double t = detail::kNoHit3;
-    if (i < world_.circles.size()) {
-      t = detail::ray_cylinder(origin_, rel, world_.circles[i]);
-    } else if (world_.ball) {
-      const Ball& ball = *world_.ball;
-      t = detail::ray_sphere(origin_, rel, Vec3{ball.position.x, ball.position.y, ball.radius}, ball.radius);
-    }
-    if (t < 1.0) return false;
+    if (hit_object(i, origin_, rel) < 1.0) return false;
   }
   return true;
 }
@@ -108,23 +103,107 @@ void CameraRenderer::compute_truth() noexcept {
     truth_.rings[r] = RingTruth{r, seen > 0, static_cast<double>(seen) / static_cast<double>(n)};
   }
 
-  BallTruth& bt = truth_.ball;
-  bt = BallTruth{};
-  if (world_.ball) {
-    const Ball& ball = *world_.ball;
-    const hal::CameraIntrinsics& k = spec_.intrinsics;
+  compute_object_truth();
+}
+
+void CameraRenderer::compute_object_truth() noexcept {
+  const hal::CameraIntrinsics& k = spec_.intrinsics;
+  const auto pixel_box = [](int u0, int u1, int v0, int v1) {
+    return u1 < u0 ? ImageBox{} : ImageBox{double(u0), double(v0), double(u1 + 1), double(v1 + 1)};
+  };
+  const auto project = [&](const Vec3& world_point, hal::Pixel& px) {
+    const Vec3 rel = sub(world_point, origin_);
+    const double z = dot(rel, axes_[2]);
+    if (!(z > 1e-9)) return false;
+    px = {k.fx * dot(rel, axes_[0]) / z + k.cx, k.fy * dot(rel, axes_[1]) / z + k.cy};
+    return true;
+  };
+  const std::size_t circles = world_.circles.size();
+
+  truth_.balls.clear();
+  for (std::size_t b = 0; b < balls_.size(); ++b) {
+    const Ball& ball = balls_[b];
+    const ObjectStats& st = stats_[circles + b];
+    BallTruth bt;
     bt.present = true;
     bt.position = hal::to_robot_frame(pose_, ball.position.x, ball.position.y);
+    bt.distance = std::hypot(bt.position.x, bt.position.y);
+    bt.bearing = std::atan2(bt.position.y, bt.position.x);
     const Vec3 rel = sub(Vec3{ball.position.x, ball.position.y, ball.radius}, origin_);
     const double z = dot(rel, axes_[2]);
     bt.in_front = z > 1e-9;
     if (bt.in_front) {
       bt.image_centre = {k.fx * dot(rel, axes_[0]) / z + k.cx, k.fy * dot(rel, axes_[1]) / z + k.cy};
       bt.image_radius = k.fx * ball.radius / z;
+      // The projected disc's share inside the image, counted on a 16 × 16 grid over its box.
+      int inside = 0, total = 0;
+      for (int j = 0; j < 16; ++j) {
+        for (int i = 0; i < 16; ++i) {
+          const double du = (i + 0.5) / 8.0 - 1.0, dv = (j + 0.5) / 8.0 - 1.0;
+          if (du * du + dv * dv > 1.0) continue;
+          ++total;
+          const double u = bt.image_centre.u + du * bt.image_radius, v = bt.image_centre.v + dv * bt.image_radius;
+          if (u >= 0.0 && u < k.width && v >= 0.0 && v < k.height) ++inside;
+        }
+      }
+      bt.in_image_fraction = total == 0 ? 0.0 : static_cast<double>(inside) / static_cast<double>(total);
     }
-    bt.visible = ball_pixels_shown_ > 0;
-    bt.visible_fraction =
-        ball_pixels_ == 0 ? 0.0 : static_cast<double>(ball_pixels_shown_) / static_cast<double>(ball_pixels_);
+    bt.visible = st.shown > 0;
+    bt.visible_fraction = st.hits == 0 ? 0.0 : static_cast<double>(st.shown) / static_cast<double>(st.hits);
+    bt.pixels = pixel_box(st.hit_u0, st.hit_u1, st.hit_v0, st.hit_v1);
+    bt.visible_pixels = pixel_box(st.shown_u0, st.shown_u1, st.shown_v0, st.shown_v1);
+    truth_.balls.push_back(bt);
+  }
+  truth_.ball = world_.ball ? truth_.balls.front() : BallTruth{};
+
+  truth_.robots.clear();
+  for (std::size_t i = 0; i < circles; ++i) {
+    const Circle& c = world_.circles[i];
+    if (c.kind != ObstacleKind::kRobot) continue;
+    const ObjectStats& st = stats_[i];
+    const RobotFrame& f = robot_frames_[i];
+    RobotTruth rt;
+    rt.circle = i;
+    rt.foot = hal::to_robot_frame(pose_, c.centre.x, c.centre.y);
+    rt.distance = std::hypot(rt.foot.x, rt.foot.y);
+    rt.bearing = std::atan2(rt.foot.y, rt.foot.x);
+    rt.heading = f.heading;
+    rt.team = f.team;
+    hal::Pixel px;
+    rt.in_front = project(Vec3{c.centre.x, c.centre.y, 0.0}, px);
+    // The whole body's box: the NAO's part boxes (or the cylinder's corners) projected.
+    double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+    bool all_in_front = true;
+    const auto add_point = [&](const Vec3& p) {
+      if (!project(p, px)) {
+        all_in_front = false;
+        return;
+      }
+      u0 = std::min(u0, px.u);
+      u1 = std::max(u1, px.u);
+      v0 = std::min(v0, px.v);
+      v1 = std::max(v1, px.v);
+    };
+    if (nao_robot(i)) {
+      for (const Vec3& q : detail::nao_hull_points()) {
+        const Vec3 local = detail::scale(f.scale, q);
+        const Vec3 w = detail::robot_to_world_direction(f.sin_h, f.cos_h, local);
+        add_point(Vec3{c.centre.x + w.x, c.centre.y + w.y, w.z});
+      }
+    } else {
+      for (int n = 0; n < 8; ++n) {
+        const double a = static_cast<double>(n) * (std::numbers::pi / 4.0);
+        for (const double h : {0.0, c.height}) {
+          add_point(Vec3{c.centre.x + c.radius * std::cos(a), c.centre.y + c.radius * std::sin(a), h});
+        }
+      }
+    }
+    if (all_in_front && u1 >= u0) rt.box = ImageBox{u0, v0, u1, v1};
+    rt.pixels = pixel_box(st.hit_u0, st.hit_u1, st.hit_v0, st.hit_v1);
+    rt.visible_pixels = pixel_box(st.shown_u0, st.shown_u1, st.shown_v0, st.shown_v1);
+    rt.visible = st.shown > 0;
+    rt.visible_fraction = st.hits == 0 ? 0.0 : static_cast<double>(st.shown) / static_cast<double>(st.hits);
+    truth_.robots.push_back(rt);
   }
 }
 

@@ -70,6 +70,59 @@ inline double ray_sphere(const Vec3& o, const Vec3& d, const Vec3& centre, doubl
   return t > 0.0 ? t : kNoHit3;
 }
 
+/// Smallest t > 0 where o + t·d meets the axis-aligned ellipsoid of semi-axes 1 / inv_radii at
+/// `centre`, or +inf. `normal` gets the outward normal there (not normalised).
+inline double ray_ellipsoid(const Vec3& o, const Vec3& d, const Vec3& centre, const Vec3& inv_radii,
+                            Vec3& normal) noexcept {
+  const Vec3 oc{(o.x - centre.x) * inv_radii.x, (o.y - centre.y) * inv_radii.y, (o.z - centre.z) * inv_radii.z};
+  const Vec3 ds{d.x * inv_radii.x, d.y * inv_radii.y, d.z * inv_radii.z};
+  const double a = dot(ds, ds);
+  const double b = dot(oc, ds);
+  const double c = dot(oc, oc) - 1.0;
+  const double disc = b * b - a * c;
+  if (disc < 0.0) return kNoHit3;
+  const double t = (-b - std::sqrt(disc)) / a;
+  if (!(t > 0.0)) return kNoHit3;
+  const Vec3 q = add(oc, scale(t, ds));  // on the unit sphere
+  normal = {q.x * inv_radii.x, q.y * inv_radii.y, q.z * inv_radii.z};
+  return t;
+}
+
+/// Smallest t > 0 where o + t·d enters the axis-aligned box [lo, hi], or +inf; `axis` gets the
+/// entered face's axis (0, 1, 2) and `side` its sign (-1 low face, +1 high face).
+inline double ray_box(const Vec3& o, const Vec3& d, const Vec3& lo, const Vec3& hi, int& axis, double& side) noexcept {
+  double t_in = -kNoHit3;
+  double t_out = kNoHit3;
+  const double os[3] = {o.x, o.y, o.z};
+  const double ds[3] = {d.x, d.y, d.z};
+  const double los[3] = {lo.x, lo.y, lo.z};
+  const double his[3] = {hi.x, hi.y, hi.z};
+  for (int i = 0; i < 3; ++i) {
+    if (ds[i] == 0.0) {
+      if (os[i] < los[i] || os[i] > his[i]) return kNoHit3;
+      continue;
+    }
+    const double inv = 1.0 / ds[i];
+    double t0 = (los[i] - os[i]) * inv;
+    double t1 = (his[i] - os[i]) * inv;
+    double s = -1.0;
+    if (t0 > t1) {
+      const double tmp = t0;
+      t0 = t1;
+      t1 = tmp;
+      s = 1.0;
+    }
+    if (t0 > t_in) {
+      t_in = t0;
+      axis = i;
+      side = s;
+    }
+    if (t1 < t_out) t_out = t1;
+  }
+  if (t_in > t_out || !(t_in > 0.0)) return kNoHit3;
+  return t_in;
+}
+
 /// floor() for values well inside the int range, without a libm call in the pixel loop.
 inline int fast_floor(double v) noexcept {
   const int i = static_cast<int>(v);

@@ -54,6 +54,8 @@ SimCamera::SimCamera(const World& world, const SimCameraConfig& config, std::uin
     slot.pixels.resize(frame_bytes(config_));
     slot.truth.lines.reserve(renderer_.line_run_capacity());
     slot.truth.rings.reserve(world.rings.size());
+    slot.truth.balls.reserve(renderer_.truth().balls.capacity());
+    slot.truth.robots.reserve(renderer_.truth().robots.capacity());
   }
   thread_ = std::thread([this] { render_loop(); });
 }

@@ -99,6 +99,8 @@ class WorldParser {
       ring(s);
     } else if (s.keyword == "lighting") {
       lighting(s);
+    } else if (s.keyword == "look") {
+      look(s);
     } else if (s.keyword == "ball") {
       ball(s);
     } else if (s.keyword == "goal") {
@@ -106,7 +108,7 @@ class WorldParser {
                    "firmware configuration");
     } else {
       fail(s.line, "unknown keyword '" + std::string(s.keyword) +
-                       "' (expected name, bounds, start, circle, polygon, marking, ring, lighting or ball)");
+                       "' (expected name, bounds, start, circle, polygon, marking, ring, lighting, look or ball)");
     }
   }
 
@@ -278,6 +280,48 @@ class WorldParser {
     lighting_line_ = s.line;
   }
 
+  /// look STYLE [BALL [LIGHT]]: the camera's look (camera_look.hpp). A version 2 statement added
+  /// later: an older build refuses it as an unknown keyword, so no build misreads a file.
+  void look(const Statement& s) {
+    require_version_2(s, "this statement");
+    if (look_line_ != 0) duplicate(s, look_line_);
+    expect_args(s, 1, 3, "style [ball [light]]");
+    CameraLook result;
+    const auto word = [&](std::size_t i) { return s.args[i].quoted ? std::string_view{} : s.args[i].text; };
+    if (word(0) == "plain") {
+      result.style = LookStyle::kPlain;
+    } else if (word(0) == "spl") {
+      result.style = LookStyle::kSpl;
+      result.ball = BallLook::kBlackWhite;
+      result.drift = 0.04;  // a real camera's auto exposure and white balance hunt a little
+    } else {
+      fail(s.line, prefix(s) + "style must be plain or spl, got '" + as_written(s.args[0]) + "'");
+    }
+    if (s.args.size() >= 2) {
+      if (word(1) == "orange") {
+        result.ball = BallLook::kOrange;
+      } else if (word(1) == "bw") {
+        result.ball = BallLook::kBlackWhite;
+      } else {
+        fail(s.line, prefix(s) + "ball must be orange or bw, got '" + as_written(s.args[1]) + "'");
+      }
+    }
+    if (s.args.size() == 3) {
+      if (word(2) == "fluorescent") {
+        result.light = LightKind::kFluorescent;
+      } else if (word(2) == "daylight") {
+        result.light = LightKind::kDaylight;
+      } else if (word(2) == "backlight") {
+        result.light = LightKind::kBacklight;
+        result.exposure = 0.7;  // the camera exposes for the bright windows
+      } else {
+        fail(s.line, prefix(s) + "light must be fluorescent, daylight or backlight, got '" + as_written(s.args[2]) + "'");
+      }
+    }
+    world_.look = result;
+    look_line_ = s.line;
+  }
+
   void polygon(const Statement& s) {
     if (s.args.size() % 2 != 0) {
       fail(s.line, prefix(s) + "expected x y pairs, got an odd number of coordinates (" +
@@ -355,6 +399,7 @@ class WorldParser {
   int start_line_ = 0;
   int ball_line_ = 0;
   int lighting_line_ = 0;
+  int look_line_ = 0;
   int version_ = 0;
   std::string bounds_text_;
   std::vector<PlacedPoint> placed_;

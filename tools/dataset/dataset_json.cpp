@@ -2,6 +2,8 @@
 // the top-left corner of the top-left pixel (hal/camera_geometry.hpp's convention).
 #include "dataset_json.hpp"
 
+#include <cmath>
+
 namespace ringlet::sim_hal::dataset {
 namespace {
 
@@ -9,6 +11,27 @@ using Json = nlohmann::ordered_json;
 
 Json pair(double a, double b) { return Json::array({a, b}); }
 Json vec3(const hal::Vec3& v) { return Json::array({v.x, v.y, v.z}); }
+/// [u0, v0, u1, v1] in pixel edges, or null for an empty box.
+Json box(const ImageBox& b) { return b.empty() ? Json(nullptr) : Json::array({b.u0, b.v0, b.u1, b.v1}); }
+
+Json ball_json(const BallTruth& b, double radius) {
+  Json j{{"visible", b.visible},
+         {"position", pair(b.position.x, b.position.y)},
+         {"radius", radius},
+         {"in_front", b.in_front},
+         {"image_centre", pair(b.image_centre.u, b.image_centre.v)},
+         {"image_radius", b.image_radius},
+         {"visible_fraction", b.visible_fraction}};
+  j["distance"] = b.distance;
+  j["bearing"] = b.bearing;
+  j["in_image_fraction"] = b.in_image_fraction;
+  j["box"] = b.in_front ? box(ImageBox{b.image_centre.u - b.image_radius, b.image_centre.v - b.image_radius,
+                                       b.image_centre.u + b.image_radius, b.image_centre.v + b.image_radius})
+                        : Json(nullptr);
+  j["pixels"] = box(b.pixels);
+  j["visible_pixels"] = box(b.visible_pixels);
+  return j;
+}
 
 }  // namespace
 
@@ -33,6 +56,13 @@ Json frame_json(const FrameRecord& record, const CameraRenderer& renderer) {
   j["camera_in_robot"] = {{"position", vec3(camera.position)},
                           {"axes", Json::array({vec3(camera.axes[0]), vec3(camera.axes[1]), vec3(camera.axes[2])})}};
   const Lighting& l = world.lighting;
+  const CameraLook& look = world.look;
+  j["look"] = {{"style", look_style_name(look.style)}, {"ball", ball_look_name(look.ball)},
+               {"light", light_kind_name(look.light)}, {"exposure", look.exposure},
+               {"white_red", look.white_red},   {"white_blue", look.white_blue},
+               {"carpet_warmth", look.carpet_warmth}, {"noise", look.noise},
+               {"blur", look.blur},             {"blur_vertical", look.blur_vertical},
+               {"jpeg_quality", record.jpeg_quality}};
   j["lighting"] = {{"brightness", l.brightness}, {"texture", l.texture},   {"sun_strength", l.sun_strength},
                    {"sun_period", l.sun_period}, {"sun_angle", l.sun_angle}, {"sun_phase", l.sun_phase}};
 
@@ -60,18 +90,52 @@ Json frame_json(const FrameRecord& record, const CameraRenderer& renderer) {
   }
   j["rings"] = std::move(rings);
 
-  const BallTruth& b = truth.ball;
-  if (b.present) {
-    j["ball"] = {{"visible", b.visible},
-                 {"position", pair(b.position.x, b.position.y)},
-                 {"radius", world.ball->radius},
-                 {"in_front", b.in_front},
-                 {"image_centre", pair(b.image_centre.u, b.image_centre.v)},
-                 {"image_radius", b.image_radius},
-                 {"visible_fraction", b.visible_fraction}};
+  // The centre circle (the first ring): where its centre is on the ground and in the picture.
+  if (!truth.rings.empty()) {
+    const Ring& ring = world.rings[truth.rings.front().ring];
+    const hal::RobotPoint c = hal::to_robot_frame(truth.pose, ring.centre.x, ring.centre.y);
+    const auto px = hal::project(k, camera, hal::Vec3{c.x, c.y, 0.0});
+    j["centre_circle"] = {{"centre", pair(c.x, c.y)},
+                          {"distance", std::hypot(c.x, c.y)},
+                          {"bearing", std::atan2(c.y, c.x)},
+                          {"radius", ring.radius},
+                          {"width", ring.width},
+                          {"visible", truth.rings.front().visible},
+                          {"visible_fraction", truth.rings.front().visible_fraction},
+                          {"image_centre", px ? pair(px->u, px->v) : Json(nullptr)}};
   } else {
-    j["ball"] = nullptr;
+    j["centre_circle"] = nullptr;
   }
+
+  const BallTruth& b = truth.ball;
+  j["ball"] = b.present ? ball_json(b, world.ball->radius) : Json(nullptr);
+  Json balls = Json::array();
+  for (std::size_t i = 0; i < truth.balls.size(); ++i) {
+    const double radius = (world.ball && i == 0) ? world.ball->radius
+                                                 : world.extra_balls[i - (world.ball ? 1U : 0U)].radius;
+    balls.push_back(ball_json(truth.balls[i], radius));
+  }
+  j["balls"] = std::move(balls);
+
+  Json robots = Json::array();
+  for (const RobotTruth& r : truth.robots) {
+    const Circle& c = world.circles[r.circle];
+    robots.push_back({{"circle", r.circle},
+                      {"world", pair(c.centre.x, c.centre.y)},
+                      {"foot", pair(r.foot.x, r.foot.y)},
+                      {"distance", r.distance},
+                      {"bearing", r.bearing},
+                      {"heading", r.heading},
+                      {"team", r.team},
+                      {"height", c.height},
+                      {"in_front", r.in_front},
+                      {"box", box(r.box)},
+                      {"pixels", box(r.pixels)},
+                      {"visible_pixels", box(r.visible_pixels)},
+                      {"visible", r.visible},
+                      {"visible_fraction", r.visible_fraction}});
+  }
+  j["robots"] = std::move(robots);
 
   Json occluders = Json::array();
   for (const Circle& c : record.occluders) {

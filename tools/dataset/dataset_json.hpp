@@ -14,7 +14,9 @@ struct FrameRecord {
   std::string format;     // "png" (BGR) or "yuyv" (raw YUYV bytes)
   std::uint64_t seed = 0;
   int generator_version = 0;      // ringlet-dataset's: the same (version, seed, index) is the same frame
-  std::vector<Circle> occluders;  // robots added to the world for this frame only
+  std::vector<Circle> occluders;  // robots added close to the camera for this frame only
+  std::vector<Circle> added_robots;  // NAO robots placed 0.5-6 m away for this frame only
+  int jpeg_quality = 0;           // the picture went through JPEG at this quality (0: it did not)
 };
 
 [[nodiscard]] nlohmann::ordered_json frame_json(const FrameRecord& record, const CameraRenderer& renderer);

@@ -1,6 +1,9 @@
 // ringlet-dataset: N rendered head-camera frames of a world, each a picture and a JSON file with
-// its ground truth, from random robot poses and head angles, with varied sun stripes and, for
-// some frames, robots standing close to the camera. Unless --no-labels, also
+// its ground truth, from random robot poses and head angles. With --look spl (the default) every
+// frame draws its own look (light, exposure, white balance, carpet, noise, motion blur, a JPEG
+// round trip: sim_hal/look_randomizer.hpp) and its own black-and-white balls and NAO robots at
+// 0.5-6 m, some partly hidden or cut by the image's edge; --look plain keeps the first renderer's
+// look and only varies the sun stripes. Some frames get robots standing close to the camera. Unless --no-labels, also
 // frame_NNNN_labels.png: per pixel the vision ColourClass of what the renderer drew there, the
 // labelled examples ringlet-vision-calibrate builds and evaluates colour tables from.
 //
@@ -25,6 +28,7 @@
 #include <iostream>
 #include <numbers>
 #include <random>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -34,6 +38,7 @@
 #include "dataset_json.hpp"
 #include "ringlet/sim_hal/camera_renderer.hpp"
 #include "ringlet/sim_hal/collision.hpp"
+#include "ringlet/sim_hal/look_randomizer.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/read_file.hpp"
 #include "ringlet/hal/yuv.hpp"
@@ -46,8 +51,8 @@ using namespace ringlet::sim_hal;
 
 /// Bumped whenever the frames a (seed, index) gives change: frames of different generator
 /// versions are different frames. 1: one stream for the whole run (a run was a prefix of any
-/// longer one). 2: one stream per frame.
-constexpr int kGeneratorVersion = 2;
+/// longer one). 2: one stream per frame. 3: the SPL look, balls and robots per frame.
+constexpr int kGeneratorVersion = 3;
 
 /// Random poses tried before a world is declared to have no free pose.
 constexpr int kMaxPoseTries = 100000;
@@ -97,6 +102,10 @@ struct Options {
   double max_pitch_deg = 29.5;  // the NAO's HeadPitch limit (hal::NaoHeadRange)
   bool quiet = false;
   bool labels = true;
+  std::string look = "spl";  // spl: the realistic look, drawn per frame; plain: the first renderer's
+  std::string ball = "bw";   // bw or orange
+  int max_balls = 4;         // balls per frame: 1..max_balls
+  int max_robots = 4;        // NAO robots added per frame: 0..max_robots (besides the world's)
 };
 
 /// The colour class a pixel of this label should be classified as: carpet is field, painted
@@ -154,6 +163,58 @@ std::vector<Circle> random_occluders(const hal::Pose2& pose, double head_yaw, Un
   return robots;
 }
 
+/// Where things may stand: on the carpet, 0.2 m inside the bounds, off every obstacle by `clear`.
+bool free_spot(const World& world, Vec2 p, double clear) {
+  return p.x > world.min.x + 0.2 && p.x < world.max.x - 0.2 && p.y > world.min.y + 0.2 && p.y < world.max.y - 0.2 &&
+         !disc_collides(world, p, clear);
+}
+
+/// A point `distance` m from the camera robot, at `spread_deg` around where the head looks (the
+/// camera's field of view is ±28.5°, so a spread past it puts some things at or beyond the edge).
+Vec2 around_view(const hal::Pose2& pose, double head_yaw, double distance, double spread_deg, Uniform& rnd) {
+  const double bearing = pose.theta - head_yaw + hal::deg_to_rad(rnd(-spread_deg, spread_deg));
+  return {pose.x + distance * std::sin(bearing), pose.y + distance * std::cos(bearing)};
+}
+
+/// 1..max balls (SPL size, 0.05 m radius) 0.5-6 m away, most in view; each off the robots.
+std::vector<Ball> random_balls(const World& scene, const hal::Pose2& pose, double head_yaw, int max, Uniform& rnd) {
+  std::vector<Ball> balls;
+  const int n = 1 + static_cast<int>(rnd(0.0, static_cast<double>(max)));
+  for (int i = 0, tries = 0; i < n && tries < 50; ++tries) {
+    const Vec2 p = around_view(pose, head_yaw, rnd(0.5, 6.0), 36.0, rnd);
+    const double dx = p.x - pose.x, dy = p.y - pose.y;
+    if (!free_spot(scene, p, 0.06) || dx * dx + dy * dy < 0.3 * 0.3) continue;
+    bool apart = true;
+    for (const Ball& b : balls) apart = apart && std::hypot(b.position.x - p.x, b.position.y - p.y) > 0.12;
+    if (!apart) continue;
+    balls.push_back(Ball{p, 0.05});
+    ++i;
+  }
+  return balls;
+}
+
+/// 0..max NAO robots 0.5-6 m away, some at the image's edges; never on the camera robot.
+std::vector<Circle> random_robots(const World& scene, const hal::Pose2& pose, double head_yaw, int max, Uniform& rnd) {
+  std::vector<Circle> robots;
+  const int n = static_cast<int>(rnd(0.0, static_cast<double>(max) + 1.0));
+  World probe = scene;
+  for (int i = 0, tries = 0; i < n && tries < 50; ++tries) {
+    const Vec2 p = around_view(pose, head_yaw, rnd(0.5, 6.0), 38.0, rnd);
+    const double dx = p.x - pose.x, dy = p.y - pose.y;
+    if (!free_spot(probe, p, 0.16) || dx * dx + dy * dy < 0.45 * 0.45) continue;
+    // A robot standing on a ball would hide it inside its feet.
+    const auto on_ball = [&](const Ball& b) { return std::hypot(b.position.x - p.x, b.position.y - p.y) <= 0.25; };
+    if ((scene.ball && on_ball(*scene.ball)) || std::any_of(scene.extra_balls.begin(), scene.extra_balls.end(), on_ball)) {
+      continue;
+    }
+    const Circle c{p, 0.15, 0.574, ObstacleKind::kRobot};
+    probe.circles.push_back(c);
+    robots.push_back(c);
+    ++i;
+  }
+  return robots;
+}
+
 Lighting random_lighting(const Lighting& base, Uniform& rnd) {
   Lighting l = base;
   l.brightness = base.brightness * rnd(0.75, 1.25);
@@ -177,7 +238,9 @@ nlohmann::ordered_json generation(const Options& o, const World& world) {
           {"world_file", o.world},         {"world", world.name},
           {"seed", o.seed},                {"format", o.format},
           {"occluded", o.occluded_share},  {"max_yaw_deg", o.max_yaw_deg},
-          {"min_pitch_deg", o.min_pitch_deg}, {"max_pitch_deg", o.max_pitch_deg}};
+          {"min_pitch_deg", o.min_pitch_deg}, {"max_pitch_deg", o.max_pitch_deg},
+          {"look", o.look},                {"ball", o.ball},
+          {"max_balls", o.max_balls},      {"max_robots", o.max_robots}};
 }
 
 /// The index ranges [a, b) already in the folder's manifest (none without one). DatasetError when
@@ -265,6 +328,7 @@ int run(const Options& o) {
   const hal::CameraIntrinsics& k = spec.intrinsics;
   std::vector<std::uint8_t> yuyv(static_cast<std::size_t>(k.width) * static_cast<std::size_t>(k.height) * 2U);
   cv::Mat classes(k.height, k.width, CV_8UC1);
+  std::vector<std::uint8_t> jpeg_frame(static_cast<std::size_t>(k.width) * static_cast<std::size_t>(k.height) * 3U);
 
   for (int n = 0; n < o.count; ++n) {
     const int i = o.first + n;
@@ -273,19 +337,52 @@ int run(const Options& o) {
     const hal::HeadJoints head{hal::deg_to_rad(rnd(-o.max_yaw_deg, o.max_yaw_deg)),
                                hal::deg_to_rad(rnd(o.min_pitch_deg, o.max_pitch_deg))};
     World scene = world;
-    scene.lighting = random_lighting(world.lighting, rnd);
     dataset::FrameRecord record;
     record.index = i;
     record.seed = o.seed;
     record.generator_version = kGeneratorVersion;
     record.format = o.format;
+    if (o.look == "spl") {
+      const BallLook ball = o.ball == "bw" ? BallLook::kBlackWhite : BallLook::kOrange;
+      const LookDraw draw = draw_spl_look(world.lighting, ball, mix64(frame_stream(o.seed, static_cast<std::uint64_t>(i)) ^ 0x100CULL));
+      scene.look = draw.look;
+      scene.lighting = draw.lighting;
+      record.jpeg_quality = draw.jpeg_quality;
+      const std::vector<Ball> balls = random_balls(scene, pose, head.yaw, o.max_balls, rnd);
+      scene.ball.reset();
+      if (!balls.empty()) {
+        scene.ball = balls.front();
+        scene.extra_balls.assign(balls.begin() + 1, balls.end());
+      }
+      record.added_robots = random_robots(scene, pose, head.yaw, o.max_robots, rnd);
+      scene.circles.insert(scene.circles.end(), record.added_robots.begin(), record.added_robots.end());
+    } else {
+      scene.lighting = random_lighting(world.lighting, rnd);
+      scene.look.ball = o.ball == "bw" ? BallLook::kBlackWhite : BallLook::kOrange;
+    }
     if (rnd(0.0, 1.0) < o.occluded_share) record.occluders = random_occluders(pose, head.yaw, rnd);
     scene.circles.insert(scene.circles.end(), record.occluders.begin(), record.occluders.end());
 
     CameraRenderer renderer(std::move(scene), spec, render_seed(o.seed, static_cast<std::uint64_t>(i)));
     renderer.render(pose, head);
 
-    const auto bgr = renderer.bgr();
+    std::span<const std::uint8_t> bgr = renderer.bgr();
+    if (record.jpeg_quality > 0) {
+      // JPEG artefacts: the frame goes through the codec and back, as a compressed stream would.
+      const cv::Mat mat(k.height, k.width, CV_8UC3, const_cast<std::uint8_t*>(bgr.data()));
+      std::vector<std::uint8_t> encoded;
+      if (!cv::imencode(".jpg", mat, encoded, {cv::IMWRITE_JPEG_QUALITY, record.jpeg_quality})) {
+        std::cerr << "ringlet-dataset: frame " << i << ": cannot encode JPEG\n";
+        return 1;
+      }
+      const cv::Mat decoded = cv::imdecode(encoded, cv::IMREAD_COLOR);
+      if (decoded.rows != k.height || decoded.cols != k.width || !decoded.isContinuous()) {
+        std::cerr << "ringlet-dataset: frame " << i << ": cannot decode its own JPEG\n";
+        return 1;
+      }
+      std::copy(decoded.data, decoded.data + jpeg_frame.size(), jpeg_frame.begin());
+      bgr = jpeg_frame;
+    }
     if (o.format == "png") {
       record.image = frame_name(i, "png");
       // OpenCV only reads the buffer; the const_cast is its C-style API, not a write.
@@ -367,6 +464,16 @@ int main(int argc, char** argv) {
       ->capture_default_str()->check(CLI::Range(Head::kMinPitchDeg, Head::kMaxPitchDeg));
   app.add_option("--max-pitch", o.max_pitch_deg, "highest head pitch, deg")
       ->capture_default_str()->check(CLI::Range(Head::kMinPitchDeg, Head::kMaxPitchDeg));
+  app.add_option("--look", o.look, "spl: a real field's look, drawn per frame (light, exposure, white balance, carpet, "
+                                   "noise, blur, JPEG), with balls and NAO robots placed per frame; plain: the first "
+                                   "renderer's look, only the sun stripes vary")
+      ->capture_default_str()->check(CLI::IsMember({"spl", "plain"}));
+  app.add_option("--ball", o.ball, "the ball: bw (the SPL ball) or orange")
+      ->capture_default_str()->check(CLI::IsMember({"bw", "orange"}));
+  app.add_option("--max-balls", o.max_balls, "--look spl: balls per frame, 1..N")
+      ->capture_default_str()->check(CLI::Range(1, 12));
+  app.add_option("--max-robots", o.max_robots, "--look spl: NAO robots added per frame, 0..N")
+      ->capture_default_str()->check(CLI::Range(0, 12));
   app.add_flag("-q,--quiet", o.quiet, "no progress output");
   app.add_flag("!--no-labels", o.labels,
                "do not write frame_NNNN_labels.png (8-bit, per pixel the colour class: 0 other, 1 field, 2 line, 3 ball)");

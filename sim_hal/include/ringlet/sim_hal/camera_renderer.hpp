@@ -1,7 +1,8 @@
 #pragma once
 // The simulated head camera's picture: a ray per pixel through hal/camera_geometry.hpp's pinhole
-// model, against the world's obstacle cylinders, the ball and the painted, lit carpet; plus the
-// frame's ground truth (what of every line, ring and the ball is really visible).
+// model, against the world's obstacles (cylinders, or NAO-shaped robots), the balls and the
+// painted, lit carpet, in the world's CameraLook (camera_look.hpp); plus the frame's ground truth
+// (what of every line, ring, ball and robot is really visible).
 // Deterministic (integer-hash noise only, no <random> distributions) and allocation-free per
 // frame: every buffer is sized in the constructor.
 #include <array>
@@ -42,12 +43,16 @@ class CameraRenderer {
 
   /// Renders the view from the true robot pose `pose` with the torso tilted and the head turned as
   /// `posture` says (the camera of hal::CameraPose::from_posture) into bgr(), and the ground truth
-  /// into truth(). Never allocates.
+  /// into truth(). Never allocates. Each call is the next frame: the look's auto-exposure drift and
+  /// the sensor noise follow the frame count.
   void render(const hal::Pose2& pose, const hal::CameraPosture& posture) noexcept;
   /// An upright torso: render(pose, {{}, head}).
   void render(const hal::Pose2& pose, const hal::HeadJoints& head) noexcept {
     render(pose, hal::CameraPosture{hal::BodyTilt{}, head});
   }
+
+  /// Frames rendered so far.
+  [[nodiscard]] std::uint64_t frames_rendered() const noexcept { return frame_; }
 
   /// BGR8, rows top to bottom, stride = 3 · width, no padding.
   [[nodiscard]] std::span<const std::uint8_t> bgr() const noexcept { return bgr_; }
@@ -72,11 +77,31 @@ class CameraRenderer {
     int u0 = 0, u1 = -1, v0 = 0, v1 = -1;  // inclusive pixel ranges; empty when u1 < u0
   };
 
+  /// Per object (circles, then balls), this frame: rays that meet it whatever is in front
+  /// (`hits`, and their pixel bounds) and pixels where it is the nearest thing (`shown`).
+  struct ObjectStats {
+    std::uint64_t hits = 0, shown = 0;
+    int hit_u0 = 0, hit_u1 = -1, hit_v0 = 0, hit_v1 = -1;
+    int shown_u0 = 0, shown_u1 = -1, shown_v0 = 0, shown_v1 = -1;
+  };
+  /// A robot's NAO pose: turned to `sin_h`/`cos_h`, scaled by `scale` (= height / 0.574 m).
+  struct RobotFrame {
+    double sin_h = 0.0, cos_h = 1.0, heading = 0.0, scale = 1.0;
+    std::uint8_t team = 0;
+  };
+
   void build_grid();
+  void setup_objects();
   void render_pixels() noexcept;
+  void post_process() noexcept;  // camera_post.cpp: motion blur, sensor noise
+  void compute_camera_gains() noexcept;
   void compute_obstacle_boxes() noexcept;
   void compute_truth() noexcept;  // camera_truth.cpp
+  void compute_object_truth() noexcept;  // camera_truth.cpp
   [[nodiscard]] bool sample_visible(const hal::Vec3& ground, hal::Pixel& px) const noexcept;
+  /// Nearest hit t of the ray o + t·d with object i (circle, or ball i − circles), or +inf.
+  [[nodiscard]] double hit_object(std::size_t i, const hal::Vec3& o, const hal::Vec3& d) const noexcept;
+  [[nodiscard]] bool nao_robot(std::size_t circle) const noexcept;
 
   World world_;
   CameraSpec spec_;
@@ -84,15 +109,20 @@ class CameraRenderer {
   Grid grid_;
   std::vector<std::uint8_t> bgr_;
   std::vector<PixelLabel> labels_;
-  std::vector<ScreenBox> boxes_;         // one per circle, then the ball
+  std::vector<Ball> balls_;              // World::ball (if any), then World::extra_balls
+  std::vector<RobotFrame> robot_frames_;  // one per circle (used for robots)
+  std::vector<std::array<hal::Vec3, 3>> ball_axes_;  // each ball's pattern orientation
+  std::vector<ObjectStats> stats_;       // one per circle, then per ball
+  std::vector<std::uint8_t> line_buffer_;  // one row or column of pixels, for the blur
+  std::vector<ScreenBox> boxes_;         // one per circle, then per ball
   std::vector<std::uint32_t> row_active_;  // obstacles whose box covers the current row
   FrameTruth truth_;
   // This frame's camera in the world frame.
   hal::Pose2 pose_{};
   hal::Vec3 origin_{};
   std::array<hal::Vec3, 3> axes_{};
-  std::uint64_t ball_pixels_ = 0;        // rays that meet the ball, occluded or not
-  std::uint64_t ball_pixels_shown_ = 0;  // of those, where the ball is the nearest thing
+  std::uint64_t frame_ = 0;              // frames rendered
+  std::array<double, 3> gain_{1.0, 1.0, 1.0};  // this frame's camera gains, B G R
 };
 
 }  // namespace ringlet::sim_hal

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ringlet/hal/geometry.hpp"
+#include "ringlet/sim_hal/camera_look.hpp"
 
 namespace ringlet::sim_hal {
 
@@ -81,7 +82,11 @@ struct World {
   std::vector<Marking> markings;
   std::vector<Ring> rings;
   Lighting lighting{};
+  CameraLook look{};  // how the camera's pictures look (the `look` statement; plain by default)
   std::optional<Ball> ball;
+  // More balls for the camera only (ringlet-dataset's scenes): drawn and given ground truth like
+  // `ball`, but the ball sensor and the mission know only `ball`. The world file cannot set them.
+  std::vector<Ball> extra_balls;
 };
 
 class WorldError : public std::runtime_error {
