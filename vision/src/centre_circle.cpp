@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "ringlet/vision/prng.hpp"
 
@@ -14,6 +15,13 @@ namespace {
 constexpr int kBins = 36;  // 10° each
 constexpr int kMaxChunkBins = 9;  // arcs are judged in chunks of at most 90° (fit_bend needs a function of t)
 constexpr int kMinChunkBins = 3;  // shorter chunks bend too little to tell
+constexpr std::size_t kKeep = 3;     // hypotheses judged
+constexpr double kMinApart = 0.3;    // m between the centres of distinct hypotheses
+
+struct Scored {
+  Circle2 circle{};
+  double score = 0.0;
+};
 
 double distance(const hal::RobotPoint& a, const hal::RobotPoint& b) noexcept { return std::hypot(b.x - a.x, b.y - a.y); }
 
@@ -124,7 +132,9 @@ CentreCircle CentreCircleFinder::judge(const Circle2& circle, std::span<const ha
   out.coverage_deg = cov.bins * 10.0;
   const bool radius_ok = std::abs(circle.radius - params.radius_m) <= params.radius_tolerance * params.radius_m;
   const bool curved = cov.curved_bins * 10.0 >= params.min_coverage_deg && cov.curved_bins > cov.straight_bins;
-  out.seen = radius_ok && curved && out.inliers >= params.min_inliers;
+  const bool hugs = out.rms_m <= params.max_rms_ratio * params.band_m ||
+                    (out.coverage_deg >= params.wide_arc_deg && out.rms_m <= params.wide_arc_rms_ratio * params.band_m);
+  out.seen = radius_ok && curved && hugs && out.inliers >= params.min_inliers;
   if (out.seen) {
     const double coverage = std::min(1.0, cov.curved_bins * 10.0 / 180.0);
     const double count = std::min(1.0, out.inliers / 40.0);
@@ -170,9 +180,34 @@ CentreCircle CentreCircleFinder::find(std::span<const CandidatePoint> candidates
   const double max_pair = 2.0 * r0;
   SplitMix64 rng = SplitMix64::for_frame(seed ^ params_.seed_salt, frame);
   const int trials = max_trials >= 0 ? max_trials : params_.max_trials;
-  std::size_t best = 0;
-  Circle2 best_circle;
+  // The best few distinct hypotheses (centres kMinApart apart), by score: the one with most
+  // support may be a false one made of lines crossing the band, and the true circle the next.
+  std::array<Scored, kKeep> kept{};
+  std::size_t kept_count = 0;
+  const auto order = [&] {  // insertion sort, best first (stable: earlier trials win ties)
+    for (std::size_t i = 1; i < kept_count; ++i) {
+      for (std::size_t j = i; j > 0 && kept[j].score > kept[j - 1].score; --j) std::swap(kept[j], kept[j - 1]);
+    }
+  };
+  const auto keep = [&](const Circle2& c, double score) {
+    for (std::size_t i = 0; i < kept_count; ++i) {
+      if (distance(kept[i].circle.centre, c.centre) < kMinApart) {
+        if (score > kept[i].score) kept[i] = {c, score};
+        order();
+        return;
+      }
+    }
+    if (kept_count < kKeep) {
+      kept[kept_count++] = {c, score};
+    } else if (score > kept[kKeep - 1].score) {
+      kept[kKeep - 1] = {c, score};
+    } else {
+      return;
+    }
+    order();
+  };
   int t = 0;
+  const double band = params_.hypothesis_band_m;
   for (; t < trials; ++t) {
     if (deadline.expired()) break;
     ++stats.trials_run;
@@ -203,32 +238,44 @@ CentreCircle CentreCircleFinder::find(std::span<const CandidatePoint> candidates
     const double nx = -(b.y - a.y) / d, ny = (b.x - a.x) / d;
     for (const double side : {1.0, -1.0}) {
       const Circle2 c{{mid.x + side * h * nx, mid.y + side * h * ny}, r0};
-      std::size_t score = 0;
+      // MSAC's truncated quadratic: a point counts 1 on the circle, less towards the band's edge,
+      // so points hugging a circle outscore lines that merely cross its band.
+      double score = 0.0;
       for (const int j : sample_) {
-        score += std::abs(distance(points_[static_cast<std::size_t>(j)], c.centre) - r0) <= params_.hypothesis_band_m ? 1U : 0U;
+        const double e = (distance(points_[static_cast<std::size_t>(j)], c.centre) - r0) / band;
+        if (std::abs(e) < 1.0) score += 1.0 - e * e;
       }
-      if (score > best) {
-        best = score;
-        best_circle = c;
-      }
+      keep(c, score);
     }
   }
   stats.trials_skipped = trials - t;
-  if (best < 3) return {};
 
-  // Dense from here: every candidate near the hypothesis, then the refit on the narrow band.
-  Circle2 circle = best_circle;
-  if (gather(circle, params_.hypothesis_band_m) < min_inliers) return {};
-  for (int iteration = 0; iteration < 3; ++iteration) {
-    const auto refined = refine_centre_circle(circle, points_, members_, params_, arc_);
-    if (!refined) break;
-    const bool moved = distance(refined->centre, circle.centre) > 1e-4 || std::abs(refined->radius - circle.radius) > 1e-4;
-    circle = *refined;
-    if (gather(circle, params_.band_m) < min_inliers || !moved) break;
+  // Dense from here: every candidate near a hypothesis, then the refit on the narrow band; the
+  // first (best supported) that passes the judgement is the circle.
+  CentreCircle out;
+  for (std::size_t h = 0; h < kept_count && !out.seen; ++h) {
+    if (kept[h].score < 3.0) break;
+    Circle2 circle = kept[h].circle;
+    if (gather(circle, band) < min_inliers) continue;
+    for (int iteration = 0; iteration < 3; ++iteration) {
+      const auto refined = refine_centre_circle(circle, points_, members_, params_, arc_);
+      if (!refined) break;
+      const bool moved =
+          distance(refined->centre, circle.centre) > 1e-4 || std::abs(refined->radius - circle.radius) > 1e-4;
+      circle = *refined;
+      if (gather(circle, params_.band_m) < min_inliers || !moved) break;
+    }
+    gather(circle, params_.band_m);
+    const CentreCircle judged = judge(circle, points_, members_, params_, arc_);
+    const ArcCoverage cov = arc_coverage(circle, points_, members_, params_, arc_);
+    if (judged.seen || h == 0) {  // the stats describe the accepted circle, or the best refused one
+      stats.curved_bins = cov.curved_bins;
+      stats.straight_bins = cov.straight_bins;
+      stats.refused = judged.seen ? CentreCircle{} : judged;
+    }
+    out = judged;
   }
-  gather(circle, params_.band_m);
-  CentreCircle out = judge(circle, points_, members_, params_, arc_);
-  stats.rejected = !out.seen;
+  stats.rejected = kept_count > 0 && !out.seen;
   return out.seen ? out : CentreCircle{};
 }
 

@@ -82,11 +82,18 @@ CircleCounts score_circle(const DetectedCircle& detected, std::span<const TruthR
 RingImage project_ring(const TruthRing& ring, const hal::CameraIntrinsics& k, const hal::CameraPose& pose) {
   RingImage out;
   constexpr int kSamples = 720;
+  // Only the part in and near the picture: samples far outside it (behind the camera, beside it)
+  // project to wild places, and a piece joining two of them would cross the image.
+  constexpr double kMargin = 50.0;
+  const auto near_image = [&](const hal::Pixel& p) {
+    return p.u >= -kMargin && p.u <= k.width + kMargin && p.v >= -kMargin && p.v <= k.height + kMargin;
+  };
   std::optional<hal::Pixel> previous;
   for (int i = 0; i <= kSamples; ++i) {
     const double a = 2.0 * std::numbers::pi * i / kSamples;
     const hal::RobotPoint g{ring.centre.x + ring.radius * std::cos(a), ring.centre.y + ring.radius * std::sin(a)};
-    const auto px = hal::project(k, pose, {g.x, g.y, 0.0});
+    auto px = hal::project(k, pose, {g.x, g.y, 0.0});
+    if (px && !near_image(*px)) px.reset();
     if (px && previous) {
       out.pieces.push_back({previous->u, previous->v, px->u, px->v});
       // The paint runs along the tangent (−sin a, cos a).

@@ -8,15 +8,19 @@
 // line rounds start, and line pieces that lie on it are not reported as lines.
 //
 // Hypotheses: two sample points 0.15 m to 2r apart and the radius r0 give two centres (the
-// circles of radius r0 through both); each is scored on the sample (points within a wide band).
-// The best is refined on every candidate by the geometric fit (radius held at r0 until the arc
-// covers enough of the circle to measure it) and judged:
+// circles of radius r0 through both); each is scored on the sample by MSAC's truncated quadratic
+// (a point within the wide band counts 1 − (distance / band)², so points hugging a circle outscore
+// lines that merely cross its band). The best three distinct ones (centres ≥ 0.3 m apart) are
+// refined in turn on every candidate by the geometric fit (radius held at r0 until the arc covers
+// enough of the circle to measure it) and judged; the first that passes is the circle:
 //   - enough inliers, covering enough of the circle (10° bins holding ≥ 2 points each);
 //   - the arc is CURVED like the circle: its inliers, in runs of occupied bins cut into chunks of
 //     at most 90°, each bend away from their chord towards the centre by more than half the
 //     circle's curvature 1/(2r0) (fit_bend); chunks that are straight are a line that merely
 //     touches the band (a tangent, an L corner) — the circle is refused unless the curved chunks
 //     cover the minimum and outnumber the straight ones;
+//   - the inliers hug the circle: their RMS distance from it is well inside the band (lines that
+//     merely cross the band spread over all of it), a little looser when much of the arc is seen;
 //   - a radius within r0 × (1 ± tolerance).
 // Confidence in [0, 1] = coverage (curved degrees / 180, at most 1) × count (inliers / 40, at
 // most 1) × fit (1 − RMS / band).
@@ -48,6 +52,10 @@ struct CircleParams {
   int min_inliers = 12;
   double min_coverage_deg = 50.0;        // curved arc needed, in 10° bins of ≥ 2 points
   double free_radius_coverage_deg = 120.0;  // below this much arc the radius is held at r0
+  double max_rms_ratio = 0.3;            // the inliers hug the circle: RMS ≤ this × band_m, or
+  double wide_arc_deg = 120.0;           //   with at least this much arc seen,
+  double wide_arc_rms_ratio = 0.45;      //   RMS ≤ this × band_m. Straight lines crossing the band
+                                         //   spread over it (RMS ≈ band / √3 ≈ 0.58 band)
   double noise_floor_m = 0.005;          // fit_bend's noise floor
   std::uint64_t seed_salt = 0xC1C1E;     // the circle's PRNG stream: SplitMix64::for_frame(seed ^ salt)
 };
@@ -66,7 +74,10 @@ struct CircleStats {
   int trials_run = 0;
   int trials_skipped = 0;  // cut by the deadline
   int points_used = 0;     // the trials' sample
-  bool rejected = false;   // the best hypothesis was judged and refused
+  bool rejected = false;   // the best hypothesis was judged and refused ...
+  CentreCircle refused{};  // ... as this (seen false; its coverage, RMS and inliers say why)
+  int curved_bins = 0;     // the judged circle's arc_coverage()
+  int straight_bins = 0;
 };
 
 /// How much of a circle a set of points covers, and whether it is curved like it.
