@@ -1,5 +1,5 @@
-# ringlet-vision-eval's JSON: both detectors, each with precision, recall and F1 in [0, 1] and a
-# positive median time. Run as: cmake -DJSON=<file> -P eval_json_case.cmake
+# ringlet-vision-eval's JSON: both detectors, each with precision, recall and F1 in [0, 1], a
+# positive median time and a count of arc pieces taken for lines; the centre circle's scores. Run as: cmake -DJSON=<file> -P eval_json_case.cmake
 file(READ ${JSON} text)
 foreach(d ringlet hough)
   foreach(m precision recall f1)
@@ -16,8 +16,25 @@ foreach(d ringlet hough)
   if(NOT n EQUAL 4)
     message(FATAL_ERROR "${d}: ${n} timed frames, expected the 4 after the tuning subset")
   endif()
-  message(STATUS "${d}: F1 ${v}, median ${t} ms")
+  string(JSON arcs GET "${text}" detectors ${d} arc_false_positives)
+  if(arcs LESS 0)
+    message(FATAL_ERROR "${d}: ${arcs} arc false positives")
+  endif()
+  message(STATUS "${d}: F1 ${v}, median ${t} ms, ${arcs} arc pieces taken for lines")
 endforeach()
+# The centre circle, scored on its own: precision, recall and F1 in [0, 1], as many right as
+# recalled at most as many as scored.
+foreach(m precision recall f1)
+  string(JSON v GET "${text}" circle ${m})
+  if(v LESS 0 OR v GREATER 1)
+    message(FATAL_ERROR "circle ${m} = ${v}, not in [0, 1]")
+  endif()
+endforeach()
+string(JSON right GET "${text}" circle true_positives)
+string(JSON scored GET "${text}" circle detections_scored)
+if(right GREATER scored)
+  message(FATAL_ERROR "circle: ${right} right of ${scored} scored")
+endif()
 string(JSON tuned LENGTH "${text}" hough_tuning)
 if(tuned LESS 2)
   message(FATAL_ERROR "Hough was not tuned (${tuned} candidates)")

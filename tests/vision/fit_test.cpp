@@ -118,5 +118,47 @@ TEST(FitCircle, RefusesCollinearAndTooFewPoints) {
   EXPECT_FALSE(fit_circle(AllPoints({{0.5, 0.5}, {0.5, 0.5}, {0.5, 0.5}, {0.5, 0.5}}).view()));
 }
 
+TEST(FitCircleGeometric, HeldRadiusFindsTheCentreOfAShortNoisyArc) {
+  // 40° of the circle, every point 1 cm off in the pattern + − − +; started 30 cm off.
+  auto pts = arc({2.0, 1.0}, 0.75, -0.3, -0.3 + 40.0 * std::numbers::pi / 180.0, 24);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double e = ((i + 1) / 2 % 2 == 0 ? 0.01 : -0.01);
+    const double a = std::atan2(pts[i].y - 1.0, pts[i].x - 2.0);
+    pts[i].x += e * std::cos(a);
+    pts[i].y += e * std::sin(a);
+  }
+  const AllPoints all(pts);
+  const auto held = fit_circle_geometric(all.view(), {{2.2, 1.2}, 0.75}, true);
+  ASSERT_TRUE(held);
+  EXPECT_NEAR(held->radius, 0.75, 0.0);
+  EXPECT_LT(std::hypot(held->centre.x - 2.0, held->centre.y - 1.0), 0.02);
+  const auto free = fit_circle_geometric(AllPoints(arc({2.0, 1.0}, 0.8, 0.0, 6.0, 30)).view(), {{2.1, 1.1}, 0.75}, false);
+  ASSERT_TRUE(free);
+  EXPECT_NEAR(free->radius, 0.8, 1e-9);
+  EXPECT_NEAR(free->centre.x, 2.0, 1e-9);
+  EXPECT_NEAR(free->centre.y, 1.0, 1e-9);
+  EXPECT_FALSE(fit_circle_geometric(AllPoints({{1.0, 1.0}}).view(), {{0.0, 0.0}, 0.75}, true));
+}
+
+TEST(FitBend, AnArcBendsTowardsItsCentreAndALineDoesNot) {
+  // An arc of radius 0.75 seen from its chord: |c| = 1 / (2 · 0.75), on the centre's side.
+  const AllPoints a(arc({0.0, 0.0}, 0.75, 1.2, 1.2 + std::numbers::pi / 3.0, 30));
+  const auto chord = fit_line_tls(a.view());
+  ASSERT_TRUE(chord);
+  const auto bend = fit_bend(*chord, a.view());
+  ASSERT_TRUE(bend);
+  EXPECT_NEAR(std::abs(bend->c), 1.0 / 1.5, 0.06);  // a parabola, not quite a circle
+  EXPECT_EQ(bend->c > 0.0, chord->signed_distance({0.0, 0.0}) > 0.0);
+  EXPECT_GT(bend->z(), 10.0);
+  // A straight line with noise (the + − − + pattern): no bend to speak of.
+  const AllPoints l(along({1.0, 0.0}, 0.8, 0.6, 40, 0.02, 0.01));
+  const auto line = fit_line_tls(l.view());
+  ASSERT_TRUE(line);
+  const auto flat = fit_bend(*line, l.view());
+  ASSERT_TRUE(flat);
+  EXPECT_LT(flat->z(), 2.0);
+  EXPECT_FALSE(fit_bend(*line, AllPoints({{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}}).view()));
+}
+
 }  // namespace
 }  // namespace ringlet::vision

@@ -62,14 +62,58 @@ TEST(Pipeline, FindsTheLinesTheCircleAndTheBall) {
   EXPECT_TRUE(r.circle.seen);
   if (r.circle.seen) {
     EXPECT_NEAR(r.circle.radius_m, 0.75, 0.1);
-    EXPECT_NEAR(r.circle.centre.x, 3.0, 0.15);
-    EXPECT_NEAR(r.circle.centre.y, 0.0, 0.15);
+    EXPECT_NEAR(r.circle.centre.x, 3.0, 0.1);
+    EXPECT_NEAR(r.circle.centre.y, 0.0, 0.1);
+    EXPECT_GT(r.circle.confidence, 0.5);
+    EXPECT_LE(r.circle.confidence, 1.0);
   }
+  EXPECT_GT(r.circle_stats.trials_run, 0);
   ASSERT_TRUE(r.ball.seen);
   EXPECT_NEAR(r.ball.ground.x, 1.4, 0.05);
   EXPECT_NEAR(r.ball.ground.y, -0.4, 0.03);
   EXPECT_FALSE(r.cut.deadline_hit);
   EXPECT_EQ(r.cut.stages_skipped, 0);
+}
+
+// Rendered views of the centre circle alone, seen partially (the rest outside the picture), near
+// and far, to the left and right: no straight line is ever reported, and the circle is found
+// (centre within 10 cm) in the views that show enough of it.
+TEST(Pipeline, PartlySeenCentreCircleGivesNoLines) {
+  struct View {
+    hal::RobotPoint centre;
+    double yaw, pitch;
+    bool expect_circle;
+  };
+  const View views[] = {
+      {{1.3, 0.9}, 0.0, 0.35, true},     // near, its right part in the lower left of the picture
+      {{1.3, -0.9}, 0.0, 0.35, true},    // mirrored
+      {{0.9, 0.0}, 0.0, 0.45, true},     // near, looking down at its far half
+      {{3.5, 1.4}, 0.0, 0.3, true},      // far, at the left edge
+      {{4.5, 0.0}, 0.0, 0.2, true},      // far, whole
+      {{2.0, 1.6}, -0.3, 0.35, false},   // a short arc at the left edge (≤ 60°: may or may not be found)
+      {{2.5, -0.2}, 0.6, 0.35, false},   // head turned left: an arc at the right edge
+  };
+  VisionPipeline p = make();
+  int i = 0;
+  for (const View& v : views) {
+    testing::Scene scene;
+    scene.rings = {{v.centre, 0.75}};
+    scene.noise = 6;
+    Camera cam;
+    cam.head = {v.yaw, v.pitch};
+    const auto frame = testing::render(scene, cam, hal::PixelFormat::kYuyv, static_cast<std::uint64_t>(i));
+    const VisionResult& r = p.process(frame.view, cam.head);
+    EXPECT_EQ(r.line_count, 0U) << "view " << i << ": " << r.line_count << " lines, first ("
+                                << r.lines[0].ground_start.x << "," << r.lines[0].ground_start.y << ")-("
+                                << r.lines[0].ground_end.x << "," << r.lines[0].ground_end.y << ")";
+    if (v.expect_circle) {
+      EXPECT_TRUE(r.circle.seen) << "view " << i;
+    }
+    if (r.circle.seen) {
+      EXPECT_LT(std::hypot(r.circle.centre.x - v.centre.x, r.circle.centre.y - v.centre.y), 0.10) << "view " << i;
+    }
+    ++i;
+  }
 }
 
 TEST(Pipeline, SameFrameSameResult) {
@@ -96,10 +140,12 @@ TEST(Pipeline, DeadlineCutsTrialsAndSaysSo) {
   EXPECT_EQ(full.cut.trials_skipped, 0);
   EXPECT_GT(full.ransac.trials_run, 30);
   EXPECT_EQ(full.stage_time[static_cast<std::size_t>(Stage::kRansac)].count() % 1000, 0);
-  // Reads before RANSAC: start, 4 laps, 4 stage checks (classify, ball, scan, RANSAC) = 9; then
-  // one per trial. A budget of 9 + 12 reads lets exactly 12 trials run.
+  // Reads before RANSAC: start, 5 laps, 5 stage checks (classify, ball, scan, circle, RANSAC) =
+  // 11, and one per centre circle trial (40); then one per line trial. A budget of 11 + 40 + 12
+  // reads lets exactly 12 line trials run.
+  EXPECT_EQ(full.circle_stats.trials_run, 40);
   FakeStopwatch watch;
-  const VisionResult& cut = p.process(frame.view, cam.head, after_reads(watch, 9 + 12));
+  const VisionResult& cut = p.process(frame.view, cam.head, after_reads(watch, 11 + 40 + 12));
   EXPECT_TRUE(cut.cut.deadline_hit);
   EXPECT_TRUE(cut.cut.lines_not_extracted);
   EXPECT_EQ(cut.ransac.trials_run, 12);
@@ -118,7 +164,8 @@ TEST(Pipeline, ExpiredDeadlineSkipsStages) {
   const VisionResult& r = p.process(frame.view, cam.head, after_reads(watch, 0));
   EXPECT_TRUE(r.cut.deadline_hit);
   const auto bit = [](Stage s) { return 1U << static_cast<unsigned>(s); };
-  EXPECT_EQ(r.cut.stages_skipped, bit(Stage::kClassify) | bit(Stage::kBall) | bit(Stage::kScan) | bit(Stage::kRansac));
+  EXPECT_EQ(r.cut.stages_skipped,
+            bit(Stage::kClassify) | bit(Stage::kBall) | bit(Stage::kScan) | bit(Stage::kCircle) | bit(Stage::kRansac));
   EXPECT_FALSE(r.ball.seen);
   EXPECT_EQ(r.line_count, 0U);
 }

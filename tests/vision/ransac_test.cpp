@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
+#include "ringlet/vision/centre_circle.hpp"
 #include "ringlet/vision/prng.hpp"
 #include "ringlet/vision/ransac.hpp"
 
@@ -58,6 +60,39 @@ LineSet run(const std::vector<CandidatePoint>& pts, RansacParams params, std::ui
   LineSet out;
   finder.find(pts, frame, kK, kPose, {}, out);
   return out;
+}
+
+/// As the pipeline runs them: the centre circle stage first, then the line rounds without its points.
+LineSet run_with_circle(const std::vector<CandidatePoint>& pts, RansacParams params = {}, std::uint64_t frame = 1) {
+  CentreCircleFinder circles(params.circle, 4096);
+  CircleStats stats;
+  const CentreCircle circle = circles.find(pts, frame, params.seed, {}, stats);
+  RansacLineFinder finder(params, 4096);
+  LineSet out;
+  finder.find(pts, frame, kK, kPose, {}, out, -1, -1, -1, 3, &circle);
+  return out;
+}
+
+/// Points on an arc of the circle (c, r) from angle `from` over `span` (radians), `spacing` metres
+/// apart, each moved radially by up to ±noise.
+void add_arc(std::vector<CandidatePoint>& pts, hal::RobotPoint c, double r, double from, double span, double spacing,
+             double noise, SplitMix64& rng) {
+  const int n = std::max(2, static_cast<int>(r * span / spacing));
+  for (int i = 0; i < n; ++i) {
+    const double a = from + span * (i + 0.5) / n;
+    const double e = (static_cast<double>(rng.below(2001)) / 1000.0 - 1.0) * noise;
+    pts.push_back({{}, {c.x + (r + e) * std::cos(a), c.y + (r + e) * std::sin(a)}, 3.0F, ScanDirection::kVertical});
+  }
+}
+
+std::string describe(const LineSet& out) {
+  std::string s;
+  for (std::size_t i = 0; i < out.count; ++i) {
+    const FieldLine& f = out.lines[i];
+    s += " (" + std::to_string(f.ground_start.x) + "," + std::to_string(f.ground_start.y) + ")-(" +
+         std::to_string(f.ground_end.x) + "," + std::to_string(f.ground_end.y) + ") n=" + std::to_string(f.inliers);
+  }
+  return s;
 }
 
 TEST(Ransac, RecoversTwoLinesAmongOutliers) {
@@ -243,6 +278,122 @@ TEST(Ransac, ImageEndpointsAreTheProjectedGroundEndpoints) {
   EXPECT_NEAR(f.image_start.u, kK.cx - kK.fx * f.ground_start.y / 2.0, 1e-6);
   EXPECT_NEAR(f.image_end.u, kK.cx - kK.fx * f.ground_end.y / 2.0, 1e-6);
   EXPECT_NEAR(std::abs(f.ground_end.y - f.ground_start.y), 1.0, 0.02) << "the whole segment, from every candidate";
+}
+
+// Pieces of the centre circle seen partially, near and far, in any direction, with noise: never a
+// reported line, with or without the circle stage; the circle itself is found (centre within
+// 10 cm) once 60° or more of it is seen.
+TEST(Ransac, PartialArcsAreNeverLines) {
+  SplitMix64 rng(21);
+  int cases = 0, circles_found = 0, circles_expected = 0;
+  for (const double span_deg : {30.0, 45.0, 60.0, 90.0, 120.0}) {
+    for (const hal::RobotPoint centre : {hal::RobotPoint{1.6, 0.3}, hal::RobotPoint{4.0, -1.0}}) {
+      for (const double from_deg : {-100.0, 10.0, 135.0, 200.0}) {
+        for (const double noise : {0.0, 0.015}) {
+          std::vector<CandidatePoint> pts;
+          const double spacing = centre.x > 3.0 ? 0.04 : 0.02;  // sparser far away
+          add_arc(pts, centre, 0.75, from_deg * std::numbers::pi / 180.0, span_deg * std::numbers::pi / 180.0, spacing,
+                  noise, rng);
+          const std::string what = std::to_string(static_cast<int>(span_deg)) + " deg arc from " +
+                                   std::to_string(static_cast<int>(from_deg)) + " deg, centre x " +
+                                   std::to_string(centre.x) + ", noise " + std::to_string(noise);
+          ++cases;
+          const LineSet staged = run_with_circle(pts, {}, static_cast<std::uint64_t>(cases));
+          EXPECT_EQ(staged.count, 0U) << what << ":" << describe(staged);
+          const LineSet alone = run(pts, {}, static_cast<std::uint64_t>(cases));
+          EXPECT_EQ(alone.count, 0U) << what << " (no circle stage):" << describe(alone);
+          if (staged.circle.seen) {
+            EXPECT_LT(std::hypot(staged.circle.centre.x - centre.x, staged.circle.centre.y - centre.y), 0.10) << what;
+            EXPECT_GT(staged.circle.confidence, 0.0) << what;
+            EXPECT_LE(staged.circle.confidence, 1.0) << what;
+          }
+          if (span_deg >= 60.0) {
+            ++circles_expected;
+            circles_found += staged.circle.seen ? 1 : 0;
+            EXPECT_TRUE(staged.circle.seen) << what;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(circles_found, circles_expected);
+}
+
+// Straight lines of any length the arc test looks at, in any direction, with noise: lines, never
+// arcs, and no circle.
+TEST(Ransac, StraightLinesAreNotArcs) {
+  SplitMix64 rng(33);
+  for (int i = 0; i < 40; ++i) {
+    const double length = 0.3 + 0.05 * static_cast<double>(rng.below(40));  // 0.3 .. 2.25 m
+    const double heading = static_cast<double>(rng.below(3600)) / 3600.0 * 2.0 * std::numbers::pi;
+    const hal::RobotPoint a{1.0 + static_cast<double>(rng.below(300)) / 100.0, -1.5 + static_cast<double>(rng.below(300)) / 100.0};
+    const hal::RobotPoint b{a.x + length * std::cos(heading), a.y + length * std::sin(heading)};
+    std::vector<CandidatePoint> pts;
+    add_line(pts, a, b, static_cast<int>(length / 0.004), rng, 0.015);  // dense enough for min_support near by
+    const LineSet out = run_with_circle(pts, {}, static_cast<std::uint64_t>(i));
+    EXPECT_FALSE(out.circle.seen) << "line " << i << " of " << length << " m";
+    EXPECT_EQ(out.stats.arcs_rejected, 0) << "line " << i << " of " << length << " m";
+    ASSERT_EQ(out.count, 1U) << "line " << i << " of " << length << " m:" << describe(out);
+    EXPECT_TRUE(matches(out.lines[0], a, b, 0.03));
+  }
+}
+
+// The field around the centre circle: the halfway line through its centre and the circle, both
+// found by the stages together; the circle's points near the crossing are shared and the line
+// keeps its whole length.
+TEST(Ransac, CircleStageKeepsTheHalfwayLine) {
+  SplitMix64 rng(17);
+  std::vector<CandidatePoint> pts;
+  add_arc(pts, {2.2, 0.4}, 0.75, 0.0, 2.0 * std::numbers::pi, 0.02, 0.01, rng);
+  add_line(pts, {2.2, -2.0}, {2.2, 2.5}, 225, rng);
+  add_outliers(pts, 40, rng);
+  const LineSet out = run_with_circle(pts);
+  ASSERT_TRUE(out.circle.seen);
+  EXPECT_LT(std::hypot(out.circle.centre.x - 2.2, out.circle.centre.y - 0.4), 0.05);
+  EXPECT_NEAR(out.circle.radius_m, 0.75, 0.03);
+  EXPECT_GT(out.circle.confidence, 0.8);
+  EXPECT_GE(out.circle.coverage_deg, 300.0);
+  int halfway = 0;
+  for (std::size_t i = 0; i < out.count; ++i) {
+    if (matches(out.lines[i], {2.2, -2.0}, {2.2, 2.5}, 0.05)) {
+      ++halfway;
+      EXPECT_NEAR(out.lines[i].length_m, 4.5, 0.1);
+    } else {
+      ADD_FAILURE() << "spurious line:" << describe(out);
+    }
+  }
+  EXPECT_EQ(halfway, 1);
+}
+
+// Lines near the circle (a penalty-area corner, a line passing 20 cm outside it) are not eaten by
+// it, and an L corner alone is no circle (two straight pieces touching a circle's band).
+TEST(Ransac, CircleStageLeavesNearbyLinesAlone) {
+  SplitMix64 rng(19);
+  std::vector<CandidatePoint> corner;
+  add_line(corner, {1.5, -1.0}, {1.5, 1.0}, 400, rng);  // near: many scan lines cross it
+  add_line(corner, {1.5, 1.0}, {3.5, 1.0}, 200, rng);
+  const LineSet alone = run_with_circle(corner);
+  EXPECT_FALSE(alone.circle.seen);
+  EXPECT_EQ(alone.count, 2U) << describe(alone) << " arcs " << alone.stats.arcs_rejected << " sparse "
+                             << alone.stats.sparse_rejected << " merges " << alone.stats.merges << " circle pts "
+                             << alone.stats.circle_points;
+
+  std::vector<CandidatePoint> pts = corner;
+  add_arc(pts, {3.0, -0.5}, 0.75, -2.0, 3.5, 0.02, 0.01, rng);  // 200° of the circle
+  add_line(pts, {3.95, -2.0}, {3.95, 1.0}, 150, rng);            // 20 cm outside it
+  const LineSet out = run_with_circle(pts);
+  ASSERT_TRUE(out.circle.seen);
+  EXPECT_LT(std::hypot(out.circle.centre.x - 3.0, out.circle.centre.y + 0.5), 0.05);
+  int found = 0;
+  for (std::size_t i = 0; i < out.count; ++i) {
+    const FieldLine& f = out.lines[i];
+    found += matches(f, {1.5, -1.0}, {1.5, 1.0}, 0.05) || matches(f, {1.5, 1.0}, {3.5, 1.0}, 0.05) ||
+                     matches(f, {3.95, -2.0}, {3.95, 1.0}, 0.05)
+                 ? 1
+                 : 0;
+  }
+  EXPECT_EQ(found, 3) << describe(out);
+  EXPECT_EQ(out.count, 3U) << describe(out);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 namespace ringlet::vision {
@@ -95,6 +96,95 @@ double circle_rms(const Circle2& c, const IndexedPoints& pts) noexcept {
     s += d * d;
   }
   return std::sqrt(s / static_cast<double>(pts.size()));
+}
+
+std::optional<Circle2> fit_circle_geometric(const IndexedPoints& pts, const Circle2& start, bool fixed_radius,
+                                            int iterations) noexcept {
+  if (pts.size() < (fixed_radius ? 2U : 3U) || !(start.radius > 0.0)) return std::nullopt;
+  Circle2 c = start;
+  for (int it = 0; it < iterations; ++it) {
+    // Residual r_i = |p_i − c| − R; ∂r/∂c = −(p − c)/|p − c|, ∂r/∂R = −1.
+    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const double ux = pts[i].x - c.centre.x;
+      const double uy = pts[i].y - c.centre.y;
+      const double d = std::hypot(ux, uy);
+      if (d < 1e-9) continue;  // a point at the centre has no direction
+      const Eigen::Vector3d j{-ux / d, -uy / d, -1.0};
+      const double r = d - c.radius;
+      jtj += j * j.transpose();
+      jtr += j * r;
+    }
+    Eigen::Vector3d step = Eigen::Vector3d::Zero();
+    if (fixed_radius) {
+      const Eigen::Matrix2d a = jtj.topLeftCorner<2, 2>();
+      if (!(std::abs(a.determinant()) > 1e-12 * (a.trace() * a.trace() + 1e-300))) return std::nullopt;
+      step.head<2>() = -a.ldlt().solve(jtr.head<2>());
+    } else {
+      const Eigen::LDLT<Eigen::Matrix3d> ldlt(jtj);
+      if (ldlt.info() != Eigen::Success || !(std::abs(jtj.determinant()) > 1e-12 * std::pow(jtj.trace(), 3.0))) {
+        return std::nullopt;
+      }
+      step = -ldlt.solve(jtr);
+    }
+    if (!step.allFinite()) return std::nullopt;
+    c.centre.x += step[0];
+    c.centre.y += step[1];
+    c.radius += step[2];
+    if (!(c.radius > 0.0)) return std::nullopt;
+    if (step.norm() < 1e-7) break;
+  }
+  return c;
+}
+
+std::optional<Bend> fit_bend(const Line2& line, const IndexedPoints& pts, double noise_floor_m) noexcept {
+  if (pts.size() < 5) return std::nullopt;
+  double t_lo = 1e300, t_hi = -1e300;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double t = line.along(pts[i]);
+    t_lo = std::min(t_lo, t);
+    t_hi = std::max(t_hi, t);
+  }
+  const double span = t_hi - t_lo;
+  if (!(span > 1e-6)) return std::nullopt;
+  const double mid = (t_lo + t_hi) / 2.0;
+  // Normal equations of d = a + b·u + c·u², u = (t − mid) / half span (scaled for conditioning).
+  const double half = span / 2.0;
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double u = (line.along(pts[i]) - mid) / half;
+    const Eigen::Vector3d r{1.0, u, u * u};
+    normal += r * r.transpose();
+    rhs += line.signed_distance(pts[i]) * r;
+  }
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(normal);
+  if (ldlt.info() != Eigen::Success || !(std::abs(normal.determinant()) > 1e-12 * std::pow(normal.trace(), 3.0))) {
+    return std::nullopt;
+  }
+  const Eigen::Vector3d sol = ldlt.solve(rhs);
+  if (!sol.allFinite()) return std::nullopt;
+  double ssr = 0.0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double u = (line.along(pts[i]) - mid) / half;
+    const double e = line.signed_distance(pts[i]) - (sol[0] + sol[1] * u + sol[2] * u * u);
+    ssr += e * e;
+  }
+  const auto n = static_cast<double>(pts.size());
+  const double noise = std::max(std::sqrt(ssr / (n - 3.0)), noise_floor_m);
+  // Var(ĉ) = σ² (NᵀN)⁻¹₂₂: the last diagonal entry of the inverse, via one solve.
+  const Eigen::Vector3d e2 = ldlt.solve(Eigen::Vector3d{0.0, 0.0, 1.0});
+  const double var_unit = std::max(e2[2], 0.0);
+  Bend b;
+  b.c = sol[2] / (half * half);
+  b.sigma_c = noise * std::sqrt(var_unit) / (half * half);
+  b.b = sol[1] / half;
+  b.a = sol[0];
+  b.t_mid = mid;
+  b.span = span;
+  b.n = static_cast<int>(pts.size());
+  return b;
 }
 
 }  // namespace ringlet::vision

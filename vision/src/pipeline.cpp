@@ -15,6 +15,7 @@ VisionPipeline::VisionPipeline(const VisionConfig& config, ColourTable table)
       scanner_(config.intrinsics.width),
       candidates_(config.max_candidates),
       ransac_(config.ransac, config.max_candidates),
+      circle_(config.ransac.circle, config.max_candidates),
       ball_(config.ball, config.intrinsics.width, config.intrinsics.height) {}
 
 const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const hal::CameraPosture& posture,
@@ -78,15 +79,25 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     scanned = true;
     lap(Stage::kScan);
   }
+  // The centre circle first, on every candidate: its arcs would otherwise become short lines.
+  if (scanned && may_run(Stage::kCircle)) {
+    r.circle = circle_.find(candidates_.points(), frame.sequence, config_.ransac.seed, deadline, r.circle_stats,
+                            level.circle_trials);
+    // Each trial walks its sample four times (two to pick the second point, one per centre).
+    r.work.point_tests += 4 * static_cast<std::int64_t>(r.circle_stats.trials_run) * r.circle_stats.points_used;
+    if (r.circle_stats.trials_skipped > 0) r.cut.deadline_hit = true;
+    lap(Stage::kCircle);
+  }
   if (scanned && may_run(Stage::kRansac)) {
     LineSet lines;
+    const CentreCircle known = r.circle;
     ransac_.find(candidates_.points(), frame.sequence, k, pose, deadline, lines, level.max_trials, level.max_lines,
-                 level.ransac_skip, level.scan_stride);
+                 level.ransac_skip, level.scan_stride, &known);
     r.lines = lines.lines;
     r.line_count = lines.count;
     r.circle = lines.circle;
     r.ransac = lines.stats;
-    r.work.point_tests = static_cast<std::int64_t>(lines.stats.trials_run) * lines.stats.points_used;
+    r.work.point_tests += static_cast<std::int64_t>(lines.stats.trials_run) * lines.stats.points_used;
     r.cut.trials_skipped = lines.stats.trials_skipped;
     r.cut.lines_not_extracted = lines.stats.stopped_early;
     r.cut.points_left = lines.stats.points_left;
@@ -94,11 +105,13 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     lap(Stage::kRansac);
   }
   if (!classified) {  // later stages depend on the classes
-    for (const Stage s : {Stage::kBall, Stage::kScan, Stage::kRansac}) {
+    for (const Stage s : {Stage::kBall, Stage::kScan, Stage::kCircle, Stage::kRansac}) {
       r.cut.stages_skipped = static_cast<std::uint8_t>(r.cut.stages_skipped | (1U << static_cast<unsigned>(s)));
     }
   } else if (!scanned) {
-    r.cut.stages_skipped = static_cast<std::uint8_t>(r.cut.stages_skipped | (1U << static_cast<unsigned>(Stage::kRansac)));
+    for (const Stage s : {Stage::kCircle, Stage::kRansac}) {
+      r.cut.stages_skipped = static_cast<std::uint8_t>(r.cut.stages_skipped | (1U << static_cast<unsigned>(s)));
+    }
   }
   r.total_time = deadline.now() - start;
   return r;

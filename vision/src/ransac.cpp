@@ -14,9 +14,13 @@ namespace {
 
 double norm(double x, double y) noexcept { return std::hypot(x, y); }
 
+bool on_circle(const CentreCircle& c, const hal::RobotPoint& q, double band) noexcept {
+  return std::abs(norm(q.x - c.centre.x, q.y - c.centre.y) - c.radius_m) <= band;
+}
+
 }  // namespace
 
-RansacScratch::RansacScratch(std::size_t capacity) {
+RansacScratch::RansacScratch(std::size_t capacity) : arc_scratch_(capacity) {
   points_.reserve(capacity);
   pixels_.reserve(capacity);
   pool_.reserve(capacity);
@@ -42,9 +46,9 @@ void RansacLineFinder::remove_from_pool(std::span<const int> members) noexcept {
 
 void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
                             const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials,
-                            int max_lines, int skip_override, int scan_stride) noexcept {
+                            int max_lines, int skip_override, int scan_stride, const CentreCircle* circle) noexcept {
   out.count = 0;
-  out.circle = CentreCircle{};
+  out.circle = circle != nullptr && circle->seen ? *circle : CentreCircle{};
   out.stats = RansacStats{};
   RansacStats& st = out.stats;
   auto& s = scratch_;
@@ -53,8 +57,15 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
   s.pool_.clear();
   const auto skip = static_cast<std::size_t>(std::max(skip_override >= 1 ? skip_override : params_.skip, 1));
   for (std::size_t i = 0; i < candidates.size() && s.points_.size() < s.points_.capacity(); ++i) {
+    const hal::RobotPoint& q = candidates[i].ground;
+    // Points of the known circle take no part: no line can be fitted through its arcs. A line
+    // crossing it (the halfway line) only loses the few centimetres where it crosses the band.
+    if (out.circle.seen && on_circle(out.circle, q, tolerance(q))) {
+      ++st.circle_points;
+      continue;
+    }
     s.pool_.push_back(static_cast<int>(s.points_.size()));
-    s.points_.push_back(candidates[i].ground);
+    s.points_.push_back(q);
     s.pixels_.push_back(candidates[i].pixel);
   }
   st.points_in = static_cast<int>(candidates.size());
@@ -146,61 +157,100 @@ bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece,
     t_max = std::max(t_max, t);
   }
   if (t_max - t_min > params_.circle_max_chord_m) return false;
-  const double r0 = params_.circle_radius_m;
-  const double r_tol = params_.circle_radius_tolerance * r0;
-  // Trim stray points that happen to lie in the line's band (a quarter of the piece at most):
-  // repeatedly drop the worst circle residual while it exceeds half the inlier tolerance.
-  s.arc_.assign(piece.begin(), piece.end());
-  std::optional<Circle2> circle;
-  const std::size_t max_drops = piece.size() / 4;
-  for (std::size_t drops = 0;; ++drops) {
-    circle = fit_circle({s.points_, s.arc_});
-    if (!circle) return false;
-    std::size_t worst = 0;
-    double worst_excess = 0.0;
-    for (std::size_t i = 0; i < s.arc_.size(); ++i) {
-      const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(s.arc_[i])];
-      const double excess =
-          std::abs(norm(q.x - circle->centre.x, q.y - circle->centre.y) - circle->radius) - tolerance(q) / 2.0;
-      if (excess > worst_excess) {
-        worst_excess = excess;
-        worst = i;
-      }
-    }
-    if (worst_excess <= 0.0) break;
-    if (drops == max_drops || s.arc_.size() <= 6) return false;
-    s.arc_.erase(s.arc_.begin() + static_cast<std::ptrdiff_t>(worst));
-  }
-  const IndexedPoints arc{s.points_, s.arc_};
-  if (!circle || std::abs(circle->radius - r0) > r_tol) return false;
-  const auto arc_line = fit_line_tls(arc);
-  const double lrms = arc_line ? line_rms(*arc_line, arc) : 0.0;
-  if (lrms < params_.circle_min_line_rms_m) return false;
-  if (!(circle_rms(*circle, arc) < params_.circle_rms_ratio * lrms)) return false;
+  const CircleParams& cp = params_.circle;
+  const double r0 = cp.radius_m;
+  const double r_tol = cp.radius_tolerance * r0;
+  ++out.stats.arcs_rejected;  // undone below when the piece is no arc
 
-  // An arc. Take every remaining point on that circle and refit, until the set stops growing.
+  // 1. Part of the circle already known: most of its points lie near it.
+  if (out.circle.seen) {
+    std::size_t near = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i) near += on_circle(out.circle, pts[i], 2.0 * tolerance(pts[i])) ? 1U : 0U;
+    if (static_cast<double>(near) >= params_.arc_near_share * static_cast<double>(pts.size())) return true;
+  }
+
+  // 2. The bend test: the piece bends away from its own chord like the circle (more than half its
+  // curvature 1/(2 r0), less than twice it), significantly. Catches short arcs whose line-fit
+  // RMS is still small, and arcs whose Kåsa radius noise throws out of range.
+  std::optional<Circle2> circle;
+  const auto chord = fit_line_tls(pts);
+  const auto bend = chord ? fit_bend(*chord, pts, cp.noise_floor_m) : std::nullopt;
+  const double c0 = 1.0 / (2.0 * r0);
+  if (bend && std::abs(bend->c) > c0 / 2.0 && std::abs(bend->c) < 2.0 * c0 && bend->z() >= params_.arc_min_bend_z) {
+    // The circle's centre: r0 from the arc's middle, on the side it bends towards.
+    const hal::RobotPoint mid = chord->at(bend->t_mid);
+    const double side = bend->c > 0.0 ? 1.0 : -1.0;
+    const double off = bend->a + side * r0;
+    circle = Circle2{{mid.x - chord->dy * off, mid.y + chord->dx * off}, r0};
+  }
+
+  // 3. The Kåsa test: a circle fits much better than the line, with a radius near r0. Stray
+  // points that merely lie in the line's band are trimmed first (a quarter of the piece at most):
+  // the worst circle residual is dropped while it exceeds half the inlier tolerance.
+  if (!circle) {
+    s.arc_.assign(piece.begin(), piece.end());
+    std::optional<Circle2> kasa;
+    const std::size_t max_drops = piece.size() / 4;
+    for (std::size_t drops = 0;; ++drops) {
+      kasa = fit_circle({s.points_, s.arc_});
+      if (!kasa) break;
+      std::size_t worst = 0;
+      double worst_excess = 0.0;
+      for (std::size_t i = 0; i < s.arc_.size(); ++i) {
+        const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(s.arc_[i])];
+        const double excess =
+            std::abs(norm(q.x - kasa->centre.x, q.y - kasa->centre.y) - kasa->radius) - tolerance(q) / 2.0;
+        if (excess > worst_excess) {
+          worst_excess = excess;
+          worst = i;
+        }
+      }
+      if (worst_excess <= 0.0) break;
+      if (drops == max_drops || s.arc_.size() <= 6) {
+        kasa.reset();
+        break;
+      }
+      s.arc_.erase(s.arc_.begin() + static_cast<std::ptrdiff_t>(worst));
+    }
+    if (kasa && std::abs(kasa->radius - r0) <= r_tol) {
+      const IndexedPoints arc{s.points_, s.arc_};
+      const auto arc_line = fit_line_tls(arc);
+      const double lrms = arc_line ? line_rms(*arc_line, arc) : 0.0;
+      if (lrms >= params_.circle_min_line_rms_m && circle_rms(*kasa, arc) < params_.circle_rms_ratio * lrms) circle = kasa;
+    }
+  }
+  if (!circle) {
+    --out.stats.arcs_rejected;
+    return false;
+  }
+  if (out.circle.seen) return true;  // an arc, but of no better circle than the known one
+
+  // An arc and no circle yet. Take every remaining point on that circle and refit, until the set
+  // stops growing; report it when it passes the centre circle's judgement.
+  s.arc_.assign(piece.begin(), piece.end());
   std::sort(s.arc_.begin(), s.arc_.end());
   const auto gather = [&](const Circle2& c) {
     s.circle_members_.clear();
     for (const int p : s.pool_) {
       const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
-      const bool on_circle = std::abs(norm(q.x - c.centre.x, q.y - c.centre.y) - c.radius) <= tolerance(q);
-      if (on_circle || std::binary_search(s.arc_.begin(), s.arc_.end(), p)) s.circle_members_.push_back(p);
+      const bool near = std::abs(norm(q.x - c.centre.x, q.y - c.centre.y) - c.radius) <= tolerance(q);
+      if (near || std::binary_search(s.arc_.begin(), s.arc_.end(), p)) s.circle_members_.push_back(p);
     }
   };
   gather(*circle);
   for (int iteration = 0; iteration < 3; ++iteration) {
     const std::size_t before = s.circle_members_.size();
-    const auto all = fit_circle({s.points_, s.circle_members_});
-    if (!all || std::abs(all->radius - r0) > r_tol) break;
+    const auto all = refine_centre_circle(*circle, s.points_, s.circle_members_, cp, s.arc_scratch_);
+    if (!all) break;
     circle = all;
     gather(*circle);
     if (s.circle_members_.size() <= before) break;
   }
-  const auto members = static_cast<int>(s.circle_members_.size());
-  if (!out.circle.seen || members > out.circle.inliers) out.circle = {true, circle->centre, circle->radius, members};
-  ++out.stats.arcs_rejected;
-  remove_from_pool(s.circle_members_);
+  const CentreCircle judged = CentreCircleFinder::judge(*circle, s.points_, s.circle_members_, cp, s.arc_scratch_);
+  if (judged.seen) {
+    out.circle = judged;
+    remove_from_pool(s.circle_members_);
+  }
   return true;
 }
 

@@ -206,7 +206,10 @@ nlohmann::json result_json(const VisionResult& r) {
     out["circle"] = {{"seen", true},
                      {"centre", {r.circle.centre.x, r.circle.centre.y}},
                      {"radius_m", r.circle.radius_m},
-                     {"inliers", r.circle.inliers}};
+                     {"inliers", r.circle.inliers},
+                     {"confidence", r.circle.confidence},
+                     {"coverage_deg", r.circle.coverage_deg},
+                     {"rms_m", r.circle.rms_m}};
   }
   if (r.ball.seen) {
     out["ball"] = {{"seen", true},

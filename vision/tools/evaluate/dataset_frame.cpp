@@ -85,6 +85,16 @@ DatasetFrame load_dataset_frame(const fs::path& json_path) {
       }
       f.lines.push_back(t);
     }
+    // The rings' truth as ringlet-dataset writes it (centre already in the robot frame).
+    for (const auto& ring : j.value("rings", nlohmann::json::array())) {
+      TruthRing t;
+      t.centre = {ring.at("centre").at(0).get<double>(), ring.at("centre").at(1).get<double>()};
+      t.radius = ring.at("radius").get<double>();
+      t.width = ring.value("width", 0.05);
+      t.visible = ring.at("visible").get<bool>();
+      t.visible_fraction = ring.at("visible_fraction").get<double>();
+      f.rings.push_back(t);
+    }
   } catch (const nlohmann::json::exception& e) {
     throw ToolError(json_path.string() + ": not a ringlet-dataset frame record: " + e.what());
   }

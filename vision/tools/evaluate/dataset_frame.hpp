@@ -8,6 +8,7 @@
 
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/sensors.hpp"
+#include "circle_score.hpp"
 #include "segment_match.hpp"
 
 namespace ringlet::vision::evaluate {
@@ -22,6 +23,7 @@ struct DatasetFrame {
   hal::CameraMount mount{};
   hal::HeadJoints head{};
   std::vector<TruthSegment> lines;
+  std::vector<TruthRing> rings;   // the centre circle(s): "rings" (frames without the field: none)
 };
 
 /// The frame_*.json files of a dataset folder, in index order (by name; frame_10000 after

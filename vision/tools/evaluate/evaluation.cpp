@@ -125,6 +125,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
   report.dataset = o.dataset.string();
   report.lut = o.lut.empty() ? "default thresholds" : o.lut.string();
   report.match = o.match;
+  report.circle_match = o.circle_match;
   report.ringlet.name = "Ringlet (LUT + scan lines + RANSAC)";
   report.baseline.name = "OpenCV Canny + HoughLinesP";
 
@@ -220,11 +221,26 @@ EvalReport run_evaluation(const EvalOptions& o) {
     }
     report.ringlet.raw_detections += segments.size();
     report.ringlet.counts += match_segments(segments, f.meta.lines, o.match);
+    report.circle += score_circle({result.circle.seen, result.circle.centre, result.circle.radius_m}, f.meta.rings,
+                                  o.circle_match);
+    std::vector<RingImage> rings;
+    const hal::CameraPose pose = hal::CameraPose::from_head(f.meta.mount, f.meta.head);
+    for (const TruthRing& ring : f.meta.rings) {
+      if (ring.visible) rings.push_back(project_ring(ring, f.meta.intrinsics, pose));
+    }
+    report.rings_visible += rings.empty() ? 0U : 1U;
+    const auto count_arcs = [&](DetectorReport& d, const std::vector<Segment2>& found) {
+      const std::size_t arcs = count_arc_false_positives(found, f.meta.lines, rings, o.match);
+      d.arc_false_positives += arcs;
+      d.frames_with_arc_false_positives += arcs > 0 ? 1U : 0U;
+    };
+    count_arcs(report.ringlet, segments);
 
     const HoughRun h = run_hough(f, report.hough, margin);
     report.baseline.time_ms.push_back(h.ms);
     report.baseline.raw_detections += h.segments.size();
     report.baseline.counts += match_segments(h.segments, f.meta.lines, o.match);
+    count_arcs(report.baseline, h.segments);
     if (o.progress) o.progress("evaluating", i + 1, report.report_frames);
   }
   return report;

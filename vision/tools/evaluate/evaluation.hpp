@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "circle_score.hpp"
 #include "hough_baseline.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "segment_match.hpp"
@@ -32,6 +33,7 @@ struct EvalOptions {
   std::vector<std::filesystem::path> disjoint_from;  // sets the test set must share no frame with
   int max_frames = 0;          // 0: all (of the test set)
   MatchParams match{};
+  CircleMatchParams circle_match{};
   VisionConfig vision{};       // intrinsics and mount are replaced by each frame's
   /// (stage, done, total): "loading", "tuning", "evaluating".
   std::function<void(const char*, std::size_t, std::size_t)> progress;
@@ -41,6 +43,8 @@ struct DetectorReport {
   std::string name;
   MatchCounts counts{};
   std::size_t raw_detections = 0;   // every segment reported, scored or not
+  std::size_t arc_false_positives = 0;  // of the scored false positives: pieces of the centre circle
+  std::size_t frames_with_arc_false_positives = 0;
   std::vector<double> time_ms;      // per frame
   [[nodiscard]] double median_ms() const;
   [[nodiscard]] double p99_ms() const;
@@ -67,6 +71,9 @@ struct EvalReport {
   std::size_t chosen = 0;            // index into tuning (when tuned)
   DetectorReport ringlet;
   DetectorReport baseline;
+  CircleCounts circle{};             // Ringlet's centre circle (Hough reports none)
+  std::size_t rings_visible = 0;     // test frames showing any of the ring
+  CircleMatchParams circle_match{};
   MatchParams match{};
   /// Hough's median time / Ringlet's: > 1 means Ringlet is faster.
   [[nodiscard]] double speed_ratio() const;

@@ -44,6 +44,8 @@ nlohmann::json detector_json(const DetectorReport& d) {
           {"mean_angle_error_deg", c.mean_angle_error_deg()},
           {"mean_endpoint_error_px", c.mean_endpoint_error_px()},
           {"mean_extent_error_px", c.mean_extent_error_px()},
+          {"arc_false_positives", d.arc_false_positives},
+          {"frames_with_arc_false_positives", d.frames_with_arc_false_positives},
           {"time_ms", {{"median", d.median_ms()}, {"p99", d.p99_ms()}, {"mean", d.mean_ms()}, {"per_frame", d.time_ms}}}};
 }
 
@@ -85,7 +87,20 @@ void print_report(const EvalReport& r, std::ostream& os) {
   row("mean extent error (px)", fmt("%.1f", a.mean_extent_error_px()), fmt("%.1f", b.mean_extent_error_px()));
   row("time/frame median (ms)", fmt("%.3f", r.ringlet.median_ms()), fmt("%.3f", r.baseline.median_ms()));
   row("time/frame p99 (ms)", fmt("%.3f", r.ringlet.p99_ms()), fmt("%.3f", r.baseline.p99_ms()));
+  row("arc pieces taken for lines", std::to_string(r.ringlet.arc_false_positives),
+      std::to_string(r.baseline.arc_false_positives));
+  row("  frames with any", std::to_string(r.ringlet.frames_with_arc_false_positives),
+      std::to_string(r.baseline.frames_with_arc_false_positives));
   os << "speed ratio (Hough median / Ringlet median): " << fmt("%.2f", r.speed_ratio()) << "x\n";
+  const CircleCounts& c = r.circle;
+  os << "\ncentre circle (Ringlet): a match is a centre within " << r.circle_match.max_centre_error_m
+     << " m and a radius within " << r.circle_match.max_radius_error_m << " m of the truth; expected when >= "
+     << r.circle_match.min_visible_deg << " deg of it is visible\n";
+  os << "  frames showing some of it " << r.rings_visible << ", expected " << c.truths << ", recalled " << c.recalled
+     << ", detections " << c.detections << " (" << c.true_positives << " right)\n";
+  os << "  precision " << fmt("%.3f", c.precision()) << "  recall " << fmt("%.3f", c.recall()) << "  F1 "
+     << fmt("%.3f", c.f1()) << "  mean centre error " << fmt("%.3f", c.mean_centre_error_m()) << " m  mean radius error "
+     << fmt("%.3f", c.mean_radius_error_m()) << " m\n";
 }
 
 nlohmann::json report_json(const EvalReport& r) {
@@ -111,7 +126,21 @@ nlohmann::json report_json(const EvalReport& r) {
           {"hough_params", r.hough.describe()},
           {"hough_tuning", tuning},
           {"detectors", {{"ringlet", detector_json(r.ringlet)}, {"hough", detector_json(r.baseline)}}},
-          {"speed_ratio", r.speed_ratio()}};
+          {"speed_ratio", r.speed_ratio()},
+          {"circle",
+           {{"precision", r.circle.precision()},
+            {"recall", r.circle.recall()},
+            {"f1", r.circle.f1()},
+            {"detections_scored", r.circle.detections},
+            {"true_positives", r.circle.true_positives},
+            {"expected", r.circle.truths},
+            {"recalled", r.circle.recalled},
+            {"frames_showing_some", r.rings_visible},
+            {"mean_centre_error_m", r.circle.mean_centre_error_m()},
+            {"mean_radius_error_m", r.circle.mean_radius_error_m()},
+            {"match", {{"max_centre_error_m", r.circle_match.max_centre_error_m},
+                       {"max_radius_error_m", r.circle_match.max_radius_error_m},
+                       {"min_visible_deg", r.circle_match.min_visible_deg}}}}}};
 }
 
 std::string report_svg(const EvalReport& r) {

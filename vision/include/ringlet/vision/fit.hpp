@@ -1,6 +1,7 @@
 #pragma once
 // Least-squares fits on ground points: a total-least-squares line (principal axis) and an
 // algebraic circle (Kåsa). Both are closed form and allocation-free.
+#include <cmath>
 #include <optional>
 #include <span>
 
@@ -46,5 +47,32 @@ struct IndexedPoints {
 [[nodiscard]] std::optional<Circle2> fit_circle(const IndexedPoints& pts) noexcept;
 /// Root mean square of |distance to centre − radius|.
 [[nodiscard]] double circle_rms(const Circle2& c, const IndexedPoints& pts) noexcept;
+
+/// The geometric circle fit: minimises Σ (|p − centre| − radius)² by Gauss–Newton from `start`
+/// (at most `iterations` steps). With `fixed_radius` only the centre moves and the radius stays
+/// start.radius — the centre circle's known size, which short arcs cannot measure (Kåsa's fit
+/// shrinks their radius under noise). None for < 3 points (< 2 with a fixed radius) or a singular
+/// step.
+[[nodiscard]] std::optional<Circle2> fit_circle_geometric(const IndexedPoints& pts, const Circle2& start,
+                                                          bool fixed_radius, int iterations = 10) noexcept;
+
+/// How a set of points bends away from `line`: the least-squares parabola
+/// d(t) = a + b·t + c·t² of their signed distance d against their position t along it (t centred).
+/// A circular arc of radius R seen from its chord has |c| ≈ 1 / (2R), its sign says which side
+/// its centre is on (c > 0: the normal's side); a straight line has c ≈ 0.
+struct Bend {
+  double c = 0.0;        // curvature term, 1/m
+  double sigma_c = 0.0;  // its standard error, from the residual noise (never below noise_floor_m)
+  double t_mid = 0.0;    // the centre of the t range (the parabola's t origin), along the line
+  double a = 0.0;        // d at t_mid
+  double b = 0.0;        // slope of d at t_mid
+  double span = 0.0;     // t range covered
+  int n = 0;
+  /// How many standard errors c is away from 0.
+  [[nodiscard]] double z() const noexcept { return sigma_c > 0.0 ? std::abs(c) / sigma_c : 0.0; }
+};
+/// None for < 5 points or all at one place along the line.
+[[nodiscard]] std::optional<Bend> fit_bend(const Line2& line, const IndexedPoints& pts,
+                                           double noise_floor_m = 0.005) noexcept;
 
 }  // namespace ringlet::vision

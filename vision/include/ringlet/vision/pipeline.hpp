@@ -1,6 +1,6 @@
 #pragma once
 // The vision step for one frame, inside a time budget:
-//   horizon → classify (below the horizon) → ball → scan lines → RANSAC lines.
+//   horizon → classify (below the horizon) → ball → scan lines → centre circle → RANSAC lines.
 // The ball goes before the lines because it matters more and costs little; RANSAC is last
 // because it is the part that degrades gracefully (its trials can be cut).
 //
@@ -31,6 +31,7 @@ struct DegradeProfile {
   int ball_stride = 4;    // px between ball seeds
   int ransac_skip = -1;   // RANSAC_SKIP (−1: ransac.skip): a sparser scan keeps more of its fewer candidates, so
                           // that lines keep enough points while trials × points still shrinks
+  int circle_trials = -1; // centre circle hypotheses (−1: ransac.circle.max_trials)
 };
 
 inline constexpr int kDegradeLevels = 3;
@@ -46,13 +47,15 @@ struct VisionConfig {
   // Level 0 = full (the RansacParams: Mi-Pal's 30 trials, skip 10); 1 = every other pixel
   // classified, scan lines twice as far apart, half the trials; 2 = least.
   std::array<DegradeProfile, kDegradeLevels> degrade{{
-      {1, 3, -1, -1, 4, -1},
-      {2, 4, 15, 6, 6, 5},
-      {2, 8, 8, 4, 8, 3},
+      {1, 3, -1, -1, 4, -1, -1},
+      {2, 4, 15, 6, 6, 5, 20},
+      {2, 8, 8, 4, 8, 3, 10},
   }};
 };
 
-enum class Stage : std::uint8_t { kHorizon, kClassify, kBall, kScan, kRansac, kCount };
+// In enum order, not run order: the centre circle runs between the scan and RANSAC (its points
+// leave the line rounds' pool), it was added last and keeps the older stages' bits.
+enum class Stage : std::uint8_t { kHorizon, kClassify, kBall, kScan, kRansac, kCircle, kCount };
 inline constexpr std::size_t kStageCount = static_cast<std::size_t>(Stage::kCount);
 
 enum class VisionStatus : std::uint8_t {
@@ -83,6 +86,7 @@ struct VisionResult {
   int candidates_dropped = 0;   // beyond max_candidates
   ScanStats scan{};
   RansacStats ransac{};
+  CircleStats circle_stats{};   // the centre circle stage
   CutStats cut{};
   WorkCount work{};             // what the stages did, for the cost model (cost_model.hpp)
   std::array<hal::Nanos, kStageCount> stage_time{};  // by Stage; measured on the deadline's stopwatch
@@ -120,6 +124,7 @@ class VisionPipeline {
   LineScanner scanner_;
   CandidateBuffer candidates_;
   RansacLineFinder ransac_;
+  CentreCircleFinder circle_;
   BallDetector ball_;
   VisionResult result_;
 };

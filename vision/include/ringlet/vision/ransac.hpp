@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/vision/centre_circle.hpp"
 #include "ringlet/vision/deadline.hpp"
 #include "ringlet/vision/fit.hpp"
 #include "ringlet/vision/scan_points.hpp"
@@ -40,11 +41,14 @@ struct RansacParams {
   double merge_angle_deg = 5.0;      // collinear merge: directions within this angle, and
   double merge_offset_m = 0.10;      //   each segment's endpoints this close to the other's line,
                                      //   and their gap along it below split_gap_m
-  double circle_radius_m = 0.75;     // the centre circle
-  double circle_radius_tolerance = 0.25;  // accepted radius: r0 × (1 ± this)
-  double circle_max_chord_m = 1.8;   // longer lines are never taken for arcs
-  double circle_rms_ratio = 0.6;     // an arc: circle-fit RMS < this × line-fit RMS, and
+  CircleParams circle{};             // the centre circle: radius, tolerance, its own stage's settings
+  double circle_max_chord_m = 1.8;   // longer pieces are never taken for arcs
+  double circle_rms_ratio = 0.6;     // an arc (Kåsa test): circle-fit RMS < this × line-fit RMS, and
   double circle_min_line_rms_m = 0.008;  //   the line fit's RMS above this (visible curvature)
+  double arc_min_bend_z = 2.5;       // an arc (bend test): the piece bends from its chord by more than
+                                     //   half the circle's curvature, this many standard errors from 0
+  double arc_near_share = 0.5;       // a piece with this share of its points within twice the
+                                     //   tolerance of the known circle is part of it
   std::uint64_t seed = 0x52494E474C4554ULL;  // "RINGLET"; per frame: SplitMix64::for_frame
 };
 
@@ -57,13 +61,6 @@ struct FieldLine {
   int inliers = 0;  // used (every skip-th) candidate points supporting it
 };
 
-struct CentreCircle {
-  bool seen = false;
-  hal::RobotPoint centre{};
-  double radius_m = 0.0;
-  int inliers = 0;
-};
-
 struct RansacStats {
   int points_in = 0;             // candidates offered
   int points_used = 0;           // the first round's sample (every skip-th candidate)
@@ -71,7 +68,8 @@ struct RansacStats {
   int trials_run = 0;
   int trials_skipped = 0;        // cut by the deadline
   int lines_extracted = 0;       // extraction rounds that produced a segment (before merging)
-  int arcs_rejected = 0;         // short curved pieces taken as (part of) the centre circle
+  int arcs_rejected = 0;         // pieces taken as (part of) the centre circle, not reported as lines
+  int circle_points = 0;         // candidates left out of the line rounds: on the known circle
   int merges = 0;
   int segments_dropped = 0;      // pieces beyond kMaxLines
   bool stopped_early = false;    // the deadline ended extraction: lines may be missing
@@ -101,6 +99,7 @@ class RansacScratch {
   std::vector<int> arc_;    // the part of a piece on its fitted circle
   std::vector<int> piece_;  // one gap-free piece of a line
   std::vector<std::pair<double, int>> order_;
+  ArcScratch arc_scratch_;
 };
 
 class RansacLineFinder {
@@ -109,15 +108,19 @@ class RansacLineFinder {
 
   /// Fits lines to `candidates` for frame `frame` (the PRNG stream). `max_trials`, `max_lines`
   /// and `skip` override the params when ≥ 0 (resp. ≥ 1 for skip) (degrade levels). Image endpoints come from projecting the ground
-  /// endpoints with (k, pose). The deadline is checked before every trial.
+  /// endpoints with (k, pose). The deadline is checked before every trial. `circle`: the centre
+  /// circle found before (CentreCircleFinder), or none: its points take no part in the line
+  /// rounds, pieces lying on it are arcs, and it is the LineSet's circle (unless none was given
+  /// and the rounds find one themselves).
   void find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
             const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials = -1,
-            int max_lines = -1, int skip = -1, int scan_stride = 3) noexcept;
+            int max_lines = -1, int skip = -1, int scan_stride = 3, const CentreCircle* circle = nullptr) noexcept;
 
   [[nodiscard]] const RansacParams& params() const noexcept { return params_; }
 
  private:
   [[nodiscard]] double tolerance(const hal::RobotPoint& p) const noexcept;
+  /// The arc test of one piece; true (and the circle updated) when it is part of the circle.
   bool try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept;
   /// Emits the line's gap-free pieces (arcs go to the circle instead); true if any was emitted.
   bool add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose, int scan_stride,
