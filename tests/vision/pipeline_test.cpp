@@ -96,10 +96,11 @@ TEST(Pipeline, DeadlineCutsTrialsAndSaysSo) {
   EXPECT_EQ(full.cut.trials_skipped, 0);
   EXPECT_GT(full.ransac.trials_run, 30);
   EXPECT_EQ(full.stage_time[static_cast<std::size_t>(Stage::kRansac)].count() % 1000, 0);
-  // Reads before RANSAC: start, 4 laps, 4 stage checks (classify, ball, scan, RANSAC) = 9; then
-  // one per trial. A budget of 9 + 12 reads lets exactly 12 trials run.
+  // Reads before RANSAC: start, 5 laps, 5 stage checks (classify, ball, robots, scan, RANSAC) = 11;
+  // then one per trial (no HOG model is installed, so no classification reads the clock). A budget
+  // of 11 + 12 reads lets exactly 12 trials run.
   FakeStopwatch watch;
-  const VisionResult& cut = p.process(frame.view, cam.head, after_reads(watch, 9 + 12));
+  const VisionResult& cut = p.process(frame.view, cam.head, after_reads(watch, 11 + 12));
   EXPECT_TRUE(cut.cut.deadline_hit);
   EXPECT_TRUE(cut.cut.lines_not_extracted);
   EXPECT_EQ(cut.ransac.trials_run, 12);
@@ -118,7 +119,7 @@ TEST(Pipeline, ExpiredDeadlineSkipsStages) {
   const VisionResult& r = p.process(frame.view, cam.head, after_reads(watch, 0));
   EXPECT_TRUE(r.cut.deadline_hit);
   const auto bit = [](Stage s) { return 1U << static_cast<unsigned>(s); };
-  EXPECT_EQ(r.cut.stages_skipped, bit(Stage::kClassify) | bit(Stage::kBall) | bit(Stage::kScan) | bit(Stage::kRansac));
+  EXPECT_EQ(r.cut.stages_skipped, bit(Stage::kClassify) | bit(Stage::kBall) | bit(Stage::kRobots) | bit(Stage::kScan) | bit(Stage::kRansac));
   EXPECT_FALSE(r.ball.seen);
   EXPECT_EQ(r.line_count, 0U);
 }

@@ -1,23 +1,27 @@
 #pragma once
 // The vision step for one frame, inside a time budget:
-//   horizon → classify (below the horizon) → ball → scan lines → RANSAC lines.
+//   horizon → classify (below the horizon) → ball → robots → scan lines → RANSAC lines.
 // The ball goes before the lines because it matters more and costs little; RANSAC is last
 // because it is the part that degrades gracefully (its trials can be cut).
 //
 // Everything is allocated in the constructor; process() allocates nothing.
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "ringlet/hal/camera.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/sensors.hpp"
 #include "ringlet/vision/ball.hpp"
+#include "ringlet/vision/bw_ball.hpp"
 #include "ringlet/vision/class_image.hpp"
 #include "ringlet/vision/colour_table.hpp"
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/deadline.hpp"
 #include "ringlet/vision/ransac.hpp"
+#include "ringlet/vision/robots.hpp"
 #include "ringlet/vision/scan_points.hpp"
 
 namespace ringlet::vision {
@@ -31,6 +35,8 @@ struct DegradeProfile {
   int ball_stride = 4;    // px between ball seeds
   int ransac_skip = -1;   // RANSAC_SKIP (−1: ransac.skip): a sparser scan keeps more of its fewer candidates, so
                           // that lines keep enough points while trials × points still shrinks
+  int ball_classify = 6;  // black-and-white ball candidates given to the HOG/SVM (0: classifier dropped)
+  int robot_classify = 3; // robot candidates given to the HOG/SVM (0: classifier dropped)
 };
 
 inline constexpr int kDegradeLevels = 3;
@@ -42,17 +48,21 @@ struct VisionConfig {
   std::size_t max_candidates = 4096;
   ScanParams scan{};
   RansacParams ransac{};
-  BallParams ball{};
+  BallParams ball{};                     // ball.mode picks the orange or the black-and-white detector
+  BwBallParams bw_ball{};
+  bool robots = true;                    // the robot stage (verified only with a robot model installed)
+  RobotParams robot{};
   // Level 0 = full (the RansacParams: Mi-Pal's 30 trials, skip 10); 1 = every other pixel
-  // classified, scan lines twice as far apart, half the trials; 2 = least.
+  // classified, scan lines twice as far apart, half the trials; 2 = least. The HOG classifiers go
+  // first: fewer candidates classified at level 1, none at level 2.
   std::array<DegradeProfile, kDegradeLevels> degrade{{
-      {1, 3, -1, -1, 4, -1},
-      {2, 4, 15, 6, 6, 5},
-      {2, 8, 8, 4, 8, 3},
+      {1, 3, -1, -1, 4, -1, 6, 3},
+      {2, 4, 15, 6, 6, 5, 2, 1},
+      {2, 8, 8, 4, 8, 3, 0, 0},
   }};
 };
 
-enum class Stage : std::uint8_t { kHorizon, kClassify, kBall, kScan, kRansac, kCount };
+enum class Stage : std::uint8_t { kHorizon, kClassify, kBall, kRobots, kScan, kRansac, kCount };
 inline constexpr std::size_t kStageCount = static_cast<std::size_t>(Stage::kCount);
 
 enum class VisionStatus : std::uint8_t {
@@ -66,6 +76,7 @@ struct CutStats {
   int trials_skipped = 0;            // RANSAC trials cut by the deadline
   bool lines_not_extracted = false;  // extraction stopped before the points ran out
   int points_left = 0;               // used candidate points never examined
+  int classifications_cut = 0;       // ball and robot candidates not classified (deadline)
 };
 
 struct VisionResult {
@@ -77,7 +88,9 @@ struct VisionResult {
   std::array<FieldLine, kMaxLines> lines{};
   std::size_t line_count = 0;
   CentreCircle circle{};
-  BallDetection ball{};
+  BallDetection ball{};         // the best ball (balls.balls[0] when balls.count > 0)
+  BallList balls{};             // black and white: up to kMaxBalls; orange: the one ball
+  RobotList robots{};
   int candidates = 0;           // scan points found
   int candidates_dropped = 0;   // beyond max_candidates
   ScanStats scan{};
@@ -98,6 +111,13 @@ class VisionPipeline {
   const VisionResult& process(const hal::FrameView& frame, const hal::HeadJoints& head, const Deadline& deadline = {},
                               int degrade_level = 0) noexcept;
 
+  /// Installs a HOG/SVM model as the ball's or the robots' classifier (by its target), at start-up
+  /// (allocates). Returns "" or why not (a model that fails validate()).
+  [[nodiscard]] std::string set_classifier(HogSvm model);
+  [[nodiscard]] bool has_classifier(HogTarget target) const noexcept {
+    return target == HogTarget::kBall ? ball_svm_.has_value() : robot_svm_.has_value();
+  }
+
   [[nodiscard]] const VisionResult& result() const noexcept { return result_; }
   [[nodiscard]] const ClassImage& classes() const noexcept { return classes_; }
   [[nodiscard]] const CandidateBuffer& candidates() const noexcept { return candidates_; }
@@ -113,6 +133,10 @@ class VisionPipeline {
   CandidateBuffer candidates_;
   RansacLineFinder ransac_;
   BallDetector ball_;
+  BwBallDetector bw_ball_;
+  RobotDetector robots_;
+  std::optional<HogClassifier> ball_svm_;
+  std::optional<HogClassifier> robot_svm_;
   VisionResult result_;
 };
 

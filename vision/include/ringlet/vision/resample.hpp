@@ -8,6 +8,13 @@
 
 namespace ringlet::vision {
 
+/// Where a HOG window lies in the frame: top-left corner and frame px per window px.
+struct WindowPlacement {
+  double left = 0.0;
+  double top = 0.0;
+  double scale = 1.0;
+};
+
 /// Resamples the square-pixel window whose top-left corner is (left, top) (frame pixels, (0, 0)
 /// the top-left corner of the top-left pixel) and whose output pixels are `scale` frame pixels
 /// wide into `out` (out_width × out_height, row-major): output pixel (i, j) is the luminance at
