@@ -17,6 +17,7 @@
 // drops it) the best-ranked candidate is reported unverified with a low confidence (≤ 0.3).
 #include <array>
 #include <cstddef>
+#include <span>
 
 #include "ringlet/hal/camera.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
@@ -49,6 +50,13 @@ struct BallList {
   int classifications_cut = 0;  // candidates not classified because the deadline passed
 };
 
+/// A ball candidate before verification.
+struct BallCandidate {
+  hal::Pixel centre{};
+  double radius = 0.0;    // expected, px (camera model)
+  double extent = 0.0;    // how well the blob's extent matches the expected diameter (0..1]
+};
+
 class BwBallDetector {
  public:
   explicit BwBallDetector(const BwBallParams& params) : params_(params) {}
@@ -64,12 +72,11 @@ class BwBallDetector {
   [[nodiscard]] double expected_radius_px(const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
                                           const hal::Pixel& px, hal::RobotPoint* ground = nullptr) const noexcept;
 
+  /// The last frame's candidates, best ranked first.
+  [[nodiscard]] std::span<const BallCandidate> candidates() const noexcept { return {cands_.data(), count_}; }
+
  private:
-  struct Candidate {
-    hal::Pixel centre{};
-    double radius = 0.0;    // expected, px
-    double extent = 0.0;    // how well the blob's extent matches the expected diameter (0..1]
-  };
+  using Candidate = BallCandidate;
   void add(const Candidate& c) noexcept;
 
   BwBallParams params_;
