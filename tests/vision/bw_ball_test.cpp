@@ -7,6 +7,7 @@
 
 #include "ringlet/vision/bw_ball.hpp"
 #include "ringlet/vision/horizon.hpp"
+#include "ringlet/vision/messages.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "ringlet/vision/robots.hpp"
 #include "synthetic_field.hpp"
@@ -122,6 +123,37 @@ TEST(HogWindows, BallAndRobotWindowsFollowTheParameters) {
   EXPECT_DOUBLE_EQ(r.scale, 2.0);                 // 112 × 64/56 = 128 px high → 2 px per window px
   EXPECT_DOUBLE_EQ(r.top, 300 - 60 * 2.0);        // the foot at window row 60
   EXPECT_DOUBLE_EQ(r.left, 200 - 16 * 2.0);
+}
+
+}  // namespace
+}  // namespace ringlet::vision
+
+namespace ringlet::vision {
+namespace {
+
+// RobotDetections carries the pipeline's robots and survives the text round trip.
+TEST(Robots, WhiteboardMessageHoldsTheRobots) {
+  static_assert(std::tuple_size_v<decltype(wb::RobotDetections{}.foot_x)> == kMaxRobots);
+  VisionResult r;
+  r.sequence = 9;
+  r.robots.count = 2;
+  r.robots.robots[0].ground = {1.5, 0.2};
+  r.robots.robots[0].distance_m = std::hypot(1.5, 0.2);
+  r.robots.robots[0].bearing_rad = std::atan2(0.2, 1.5);
+  r.robots.robots[0].verified = true;
+  r.robots.robots[0].confidence = 0.8;
+  r.robots.robots[1].ground = {2.5, -0.7};
+  const wb::RobotDetections m = to_robot_detections(r);
+  EXPECT_EQ(m.sequence, 9U);
+  EXPECT_EQ(m.count, 2);
+  EXPECT_EQ(m.foot_x[0], 1.5);
+  EXPECT_EQ(m.foot_y[1], -0.7);
+  EXPECT_EQ(m.verified[0], 1);
+  EXPECT_EQ(m.verified[1], 0);
+  EXPECT_EQ(m.confidence[0], 0.8);
+  const auto back = wb::RobotDetections::from_string(m.description());
+  ASSERT_TRUE(back.has_value()) << back.error();
+  EXPECT_EQ(back.value(), m);
 }
 
 }  // namespace
