@@ -174,7 +174,16 @@ nlohmann::json result_json(const VisionResult& r) {
                    {"radius_px", r.ball.radius_px},
                    {"confidence", r.ball.confidence}};
     if (r.ball.ground_valid) out["ball"]["ground"] = {r.ball.ground.x, r.ball.ground.y};
+    out["ball"]["verified"] = r.ball.verified;  // black-and-white mode: accepted by the HOG/SVM
   }
+  nlohmann::json robots = nlohmann::json::array();  // foot points on the ground (robots.hpp)
+  for (std::size_t i = 0; i < r.robots.count; ++i) {
+    const RobotDetection& d = r.robots.robots[i];
+    robots.push_back({{"foot", {d.foot.u, d.foot.v}}, {"box", {d.left, d.top, d.width, d.height}},
+                      {"ground", {d.ground.x, d.ground.y}}, {"distance_m", d.distance_m}, {"bearing_rad", d.bearing_rad},
+                      {"verified", d.verified}, {"confidence", d.confidence}});
+  }
+  out["robots"] = std::move(robots);
   return out;
 }
 
