@@ -6,6 +6,30 @@
 #include <numbers>
 
 namespace ringlet::vision {
+namespace {
+
+// The gradient's direction in [0, 2π) (as OpenCV's cartToPolar; 0 for a zero gradient) from basic
+// arithmetic only, so every target gives the same bits: octant reduction and an odd degree-11
+// polynomial fitted by least squares on Chebyshev nodes to atan on [0, 1] (|error| < 2e-6 rad,
+// finer than OpenCV's own fast atan). Cheaper than std::atan2, which dominated the descriptor.
+double orientation(int dx, int dy) noexcept {
+  if (dx == 0 && dy == 0) return 0.0;
+  const double ax = dx < 0 ? -dx : dx;
+  const double ay = dy < 0 ? -dy : dy;
+  const bool steep = ay > ax;
+  const double t = steep ? ax / ay : ay / ax;
+  const double t2 = t * t;
+  double a = t * (0.999979831616014 +
+                  t2 * (-0.3326554200144419 +
+                        t2 * (0.19366989156838635 +
+                              t2 * (-0.1166499864559437 + t2 * (0.05282220267342674 + t2 * -0.011769976944151949)))));
+  if (steep) a = 0.5 * std::numbers::pi - a;
+  if (dx < 0) a = std::numbers::pi - a;
+  if (dy < 0) a = 2.0 * std::numbers::pi - a;
+  return a >= 2.0 * std::numbers::pi ? 0.0 : a;
+}
+
+}  // namespace
 
 std::string HogParams::check() const {
   if (cell < 2 || cell > 64) return "cell size " + std::to_string(cell) + " px out of range [2, 64]";
@@ -95,9 +119,7 @@ bool HogExtractor::compute(std::span<const std::uint8_t> patch, std::span<float>
       const auto fdx = static_cast<float>(dx);
       const auto fdy = static_cast<float>(dy);
       const float mag = std::sqrt(fdx * fdx + fdy * fdy);
-      double angle = std::atan2(static_cast<double>(dy), static_cast<double>(dx));  // (−π, π]
-      if (angle < 0.0) angle += 2.0 * std::numbers::pi;                               // [0, 2π) like cartToPolar
-      if (angle >= 2.0 * std::numbers::pi) angle = 0.0;
+      const double angle = orientation(dx, dy);
       float a = static_cast<float>(angle) * angle_scale - 0.5f;
       int lower = static_cast<int>(std::floor(a));
       a -= static_cast<float>(lower);

@@ -12,7 +12,8 @@
 //   - order: blocks column by column (x outer, y inner); inside a block cells column by column;
 //     inside a cell the bins.
 // The only known difference: OpenCV's orientation comes from its fast polynomial atan (~0.01°),
-// ours from std::atan2; tests/vision/hog_opencv_test.cpp measures the effect.
+// ours from another polynomial (< 2e-6 rad, basic arithmetic only: the same bits on every target);
+// tests/vision/hog_opencv_test.cpp measures the effect.
 //
 // Everything is sized at construction; compute() allocates nothing.
 #include <cstdint>

@@ -35,8 +35,8 @@ struct DegradeProfile {
   int ball_stride = 4;    // px between ball seeds
   int ransac_skip = -1;   // RANSAC_SKIP (−1: ransac.skip): a sparser scan keeps more of its fewer candidates, so
                           // that lines keep enough points while trials × points still shrinks
-  int ball_classify = 6;  // black-and-white ball candidates given to the HOG/SVM (0: classifier dropped)
-  int robot_classify = 3; // robot candidates given to the HOG/SVM (0: classifier dropped)
+  int ball_classify = 4;  // black-and-white ball candidates given to the HOG/SVM (0: classifier dropped)
+  int robot_classify = 2; // robot candidates given to the HOG/SVM (0: classifier dropped)
 };
 
 inline constexpr int kDegradeLevels = 3;
@@ -56,7 +56,7 @@ struct VisionConfig {
   // classified, scan lines twice as far apart, half the trials; 2 = least. The HOG classifiers go
   // first: fewer candidates classified at level 1, none at level 2.
   std::array<DegradeProfile, kDegradeLevels> degrade{{
-      {1, 3, -1, -1, 4, -1, 6, 3},
+      {1, 3, -1, -1, 4, -1, 4, 2},
       {2, 4, 15, 6, 6, 5, 2, 1},
       {2, 8, 8, 4, 8, 3, 0, 0},
   }};
