@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+#include <tuple>
 
 #include "ringlet/vision/hog_svm.hpp"
 #include "ringlet/vision/prng.hpp"
@@ -122,6 +123,23 @@ TEST(HogSvm, RandomBytesNeverGiveAModel) {
     for (auto& b : bytes) b = static_cast<std::uint8_t>(g.below(256));
     if (bytes.size() >= 4 && k % 2 == 0) std::copy_n("RHOG", 4, bytes.begin());
     EXPECT_FALSE(HogSvm::parse(bytes, "fuzz").model.has_value());
+  }
+}
+
+// The committed bootstrap models load, are for what their names say, and are labelled bootstrap
+// in their recipes.
+TEST(HogSvm, CommittedBootstrapModelsLoad) {
+  const std::filesystem::path dir = RINGLET_VISION_MODELS_DIR;
+  for (const auto& [name, target, params] : {std::tuple{"ball_bootstrap.hog", HogTarget::kBall, HogParams::ball()},
+                                             std::tuple{"robot_bootstrap.hog", HogTarget::kRobot, HogParams::robot()}}) {
+    const HogSvmLoad l = HogSvm::load(dir / name);
+    ASSERT_TRUE(l.model.has_value()) << l.error;
+    EXPECT_EQ(l.model->target(), target);
+    EXPECT_EQ(l.model->params(), params);
+    std::ifstream recipe(dir / (std::string(name) + ".recipe.txt"));
+    const std::string text((std::istreambuf_iterator<char>(recipe)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("bootstrap: YES"), std::string::npos) << name;
+    EXPECT_NE(text.find("command: ringlet-train-hog"), std::string::npos) << name;
   }
 }
 
