@@ -19,3 +19,14 @@ if(OpenCV_FOUND)
 else()
   message(STATUS "OpenCV not found for this target: no camera backend, no vision tools")
 endif()
+
+# OpenCV's ml (the SVM) and objdetect (cv::HOGDescriptor) modules: only for the offline HOG
+# trainer (vision/tools/train) and the tests that hold our HOG and SVM against OpenCV's.
+if(OpenCV_FOUND)
+  find_package(OpenCV QUIET COMPONENTS core imgproc ml objdetect)
+  if(OpenCV_FOUND)
+    add_library(ringlet_opencv_ml INTERFACE)
+    target_link_libraries(ringlet_opencv_ml INTERFACE ringlet_opencv opencv_ml opencv_objdetect)
+  endif()
+  set(OpenCV_FOUND ${RINGLET_HAVE_OPENCV})
+endif()

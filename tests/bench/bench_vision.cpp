@@ -8,6 +8,7 @@
 
 #include "ringlet/vision/ball.hpp"
 #include "ringlet/vision/cost_model.hpp"
+#include "ringlet/vision/hog_svm.hpp"
 #include "ringlet/vision/horizon.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "synthetic_field.hpp"
@@ -100,6 +101,40 @@ void BM_Ball(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(detector.detect(classes, f.cam.k, f.pose));
 }
 BENCHMARK(BM_Ball)->Unit(benchmark::kMicrosecond);
+
+// One HOG/SVM classification: resample a window (a ball 20 px across, a robot 150 px tall), HOG,
+// dot product. Arg 0: the ball's 32×32 window, 1: the robot's 32×64.
+void BM_HogClassify(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const HogParams p = state.range(0) == 0 ? HogParams::ball() : HogParams::robot();
+  HogClassifier c(HogSvm(state.range(0) == 0 ? HogTarget::kBall : HogTarget::kRobot, p,
+                         std::vector<float>(static_cast<std::size_t>(p.feature_length()), 0.01f), 0.0, 0.0));
+  const double scale = state.range(0) == 0 ? 1.0 : 2.7;
+  for (auto _ : state) benchmark::DoNotOptimize(c.score_window(f.yuyv.view, 300, 250, scale));
+}
+BENCHMARK(BM_HogClassify)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// The whole pipeline with the black-and-white ball detector and both classifiers installed
+// (weights that accept every window, so every candidate the level allows is classified).
+void BM_PipelineHog(benchmark::State& state) {
+  const Fixture& f = fixture();
+  VisionConfig config;
+  config.ball.mode = BallMode::kBlackWhite;
+  VisionPipeline pipeline(config, f.table);
+  for (const HogTarget t : {HogTarget::kBall, HogTarget::kRobot}) {
+    const HogParams p = t == HogTarget::kBall ? HogParams::ball() : HogParams::robot();
+    (void)pipeline.set_classifier(HogSvm(t, p, std::vector<float>(static_cast<std::size_t>(p.feature_length()), 0.01f), 0.0, -1e9));
+  }
+  const int level = static_cast<int>(state.range(0));
+  hal::FrameView view = f.yuyv.view;
+  for (auto _ : state) {
+    ++view.sequence;
+    benchmark::DoNotOptimize(pipeline.process(view, f.cam.head, {}, level).line_count);
+  }
+  const VisionResult& r = pipeline.result();
+  state.counters["classified"] = r.balls.classified + r.robots.classified;
+}
+BENCHMARK(BM_PipelineHog)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
 void BM_Pipeline(benchmark::State& state) {
   const Fixture& f = fixture();

@@ -41,5 +41,39 @@ TEST(VisionNoAllocation, ProcessAllocatesNothing) {
   EXPECT_GT(lines, 0U);
 }
 
+// The black-and-white ball and the robots, with HOG/SVM classifiers installed (weights that accept
+// every window, so every candidate is resampled, described and scored), at every degrade level.
+TEST(VisionNoAllocation, HogStagesAllocateNothing) {
+  testing::Camera cam;
+  testing::Scene scene = testing::field_scene();
+  scene.ball_black_white = true;
+  scene.blobs.push_back({{1.0, 0.5}, {1.3, 0.7}});  // a white blob: candidates for both detectors
+  const auto yuyv = testing::render(scene, cam, hal::PixelFormat::kYuyv);
+  VisionConfig config;
+  config.ball.mode = BallMode::kBlackWhite;
+  VisionPipeline p(config, ColourTable::from_thresholds({}));
+  const auto accept_all = [](HogTarget t, const HogParams& hog) {
+    return HogSvm(t, hog, std::vector<float>(static_cast<std::size_t>(hog.feature_length()), 0.01f), 0.0, -1e9);
+  };
+  ASSERT_EQ(p.set_classifier(accept_all(HogTarget::kBall, HogParams::ball())), "");
+  ASSERT_EQ(p.set_classifier(accept_all(HogTarget::kRobot, HogParams::robot())), "");
+  StepWatch watch;
+  const std::uint64_t before = ringlet::test::allocations();
+  int classified = 0;
+  std::size_t balls = 0;
+  for (int k = 0; k < 3; ++k) {
+    for (int level = 0; level < kDegradeLevels; ++level) {
+      const VisionResult& r = p.process(yuyv.view, cam.head, {}, level);
+      classified += r.balls.classified + r.robots.classified;
+      balls += r.balls.count;
+      const VisionResult& cut = p.process(yuyv.view, cam.head, Deadline{&watch, watch.wall_now() + hal::Nanos{6000}, false}, level);
+      classified += cut.balls.classified;
+    }
+  }
+  EXPECT_EQ(ringlet::test::allocations() - before, 0U);
+  EXPECT_GT(classified, 0);
+  EXPECT_GT(balls, 0U);
+}
+
 }  // namespace
 }  // namespace ringlet::vision

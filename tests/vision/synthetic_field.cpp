@@ -40,7 +40,23 @@ Bgr shade(const Scene& scene, const Camera& cam, const hal::CameraPose& pose, do
     const double a = ray.x * ray.x + ray.y * ray.y + ray.z * ray.z;
     const double b = 2.0 * (oc.x * ray.x + oc.y * ray.y + oc.z * ray.z);
     const double cc = oc.x * oc.x + oc.y * oc.y + oc.z * oc.z - scene.ball_radius * scene.ball_radius;
-    if (b * b - 4.0 * a * cc >= 0.0 && b < 0.0) return kOrange;
+    const double disc = b * b - 4.0 * a * cc;
+    if (disc >= 0.0 && b < 0.0) {
+      if (!scene.ball_black_white) return kOrange;
+      // The surface normal where the ray enters; black near the 12 icosahedron vertices (the
+      // pentagons of a truncated icosahedron, ~21° across).
+      const double t = (-b - std::sqrt(disc)) / (2.0 * a);
+      const hal::Vec3 n{(oc.x + t * ray.x) / scene.ball_radius, (oc.y + t * ray.y) / scene.ball_radius,
+                        (oc.z + t * ray.z) / scene.ball_radius};
+      constexpr double phi = 1.618033988749895;
+      const double norm = std::sqrt(1.0 + phi * phi);
+      const double vs[12][3] = {{0, 1, phi}, {0, -1, phi}, {0, 1, -phi}, {0, -1, -phi}, {1, phi, 0}, {-1, phi, 0},
+                                {1, -phi, 0}, {-1, -phi, 0}, {phi, 0, 1}, {-phi, 0, 1}, {phi, 0, -1}, {-phi, 0, -1}};
+      for (const auto& vertex : vs) {
+        if ((n.x * vertex[0] + n.y * vertex[1] + n.z * vertex[2]) / norm > 0.93) return kBallBlack;
+      }
+      return kWhite;
+    }
   }
   if (!(ray.z < -1e-12)) return kWall;
   const double t = -pose.position.z / ray.z;

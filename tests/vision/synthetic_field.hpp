@@ -19,6 +19,7 @@ inline constexpr Bgr kGreen{40, 140, 40};
 inline constexpr Bgr kWhite{235, 235, 235};
 inline constexpr Bgr kOrange{0, 120, 255};
 inline constexpr Bgr kWall{130, 120, 110};
+inline constexpr Bgr kBallBlack{30, 30, 30};
 
 struct GroundSegment {
   hal::RobotPoint a, b;
@@ -40,6 +41,7 @@ struct Scene {
   std::vector<GroundBox> blobs;
   std::optional<hal::RobotPoint> ball;
   double ball_radius = 0.05;
+  bool ball_black_white = false;  // the SPL ball: white with 12 black pentagons (else orange)
   int noise = 0;  // ± this per channel, hashed from the pixel position
 };
 

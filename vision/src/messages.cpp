@@ -42,4 +42,22 @@ wb::BallBelief to_ball_belief(const VisionResult& r) noexcept {
   return b;
 }
 
+wb::RobotDetections to_robot_detections(const VisionResult& r) noexcept {
+  wb::RobotDetections m{};
+  m.sequence = r.sequence;
+  m.capture_time_ns = r.capture_time.count();
+  const std::size_t n = std::min(r.robots.count, m.foot_x.size());
+  m.count = static_cast<std::uint8_t>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const RobotDetection& d = r.robots.robots[i];
+    m.foot_x[i] = d.ground.x;
+    m.foot_y[i] = d.ground.y;
+    m.distance[i] = d.distance_m;
+    m.bearing[i] = d.bearing_rad;
+    m.verified[i] = d.verified ? 1 : 0;
+    m.confidence[i] = d.confidence;
+  }
+  return m;
+}
+
 }  // namespace ringlet::vision

@@ -16,7 +16,19 @@ VisionPipeline::VisionPipeline(const VisionConfig& config, ColourTable table)
       candidates_(config.max_candidates),
       ransac_(config.ransac, config.max_candidates),
       circle_(config.ransac.circle, config.max_candidates),
-      ball_(config.ball, config.intrinsics.width, config.intrinsics.height) {}
+      ball_(config.ball, config.intrinsics.width, config.intrinsics.height),
+      bw_ball_(config.bw_ball),
+      robots_(config.robot) {}
+
+std::string VisionPipeline::set_classifier(HogSvm model) {
+  if (std::string e = model.validate(); !e.empty()) return std::string("hog model: ") + e;
+  if (model.target() == HogTarget::kBall) {
+    ball_svm_.emplace(std::move(model));
+  } else {
+    robot_svm_.emplace(std::move(model));
+  }
+  return {};
+}
 
 const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const hal::CameraPosture& posture,
                                             const Deadline& deadline, int degrade_level) noexcept {
@@ -63,9 +75,26 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     lap(Stage::kClassify);
   }
   if (classified && may_run(Stage::kBall)) {
-    r.ball = ball_.detect(classes_, k, pose, level.ball_stride);
+    if (config_.ball.mode == BallMode::kBlackWhite) {
+      bw_ball_.detect(classes_, frame, k, pose, level.ball_stride, ball_svm_ ? &*ball_svm_ : nullptr,
+                      level.ball_classify, deadline, r.balls);
+      if (r.balls.count > 0) r.ball = r.balls.balls[0];
+      r.cut.classifications_cut += r.balls.classifications_cut;
+    } else {
+      r.ball = ball_.detect(classes_, k, pose, level.ball_stride);
+      if (r.ball.seen) {
+        r.balls.balls[0] = r.ball;
+        r.balls.count = 1;
+      }
+    }
     r.work.ball_samples = ground_pixels / (level.ball_stride * level.ball_stride);
     lap(Stage::kBall);
+  }
+  if (classified && config_.robots && may_run(Stage::kRobots)) {
+    robots_.detect(classes_, frame, k, pose, level.ball_stride, robot_svm_ ? &*robot_svm_ : nullptr,
+                   level.robot_classify, deadline, r.robots);
+    r.cut.classifications_cut += r.robots.classifications_cut;
+    lap(Stage::kRobots);
   }
   bool scanned = false;
   if (classified && may_run(Stage::kScan)) {
@@ -105,7 +134,7 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     lap(Stage::kRansac);
   }
   if (!classified) {  // later stages depend on the classes
-    for (const Stage s : {Stage::kBall, Stage::kScan, Stage::kCircle, Stage::kRansac}) {
+    for (const Stage s : {Stage::kBall, Stage::kRobots, Stage::kScan, Stage::kCircle, Stage::kRansac}) {
       r.cut.stages_skipped = static_cast<std::uint8_t>(r.cut.stages_skipped | (1U << static_cast<unsigned>(s)));
     }
   } else if (!scanned) {

@@ -217,7 +217,16 @@ nlohmann::json result_json(const VisionResult& r) {
                    {"radius_px", r.ball.radius_px},
                    {"confidence", r.ball.confidence}};
     if (r.ball.ground_valid) out["ball"]["ground"] = {r.ball.ground.x, r.ball.ground.y};
+    out["ball"]["verified"] = r.ball.verified;  // black-and-white mode: accepted by the HOG/SVM
   }
+  nlohmann::json robots = nlohmann::json::array();  // foot points on the ground (robots.hpp)
+  for (std::size_t i = 0; i < r.robots.count; ++i) {
+    const RobotDetection& d = r.robots.robots[i];
+    robots.push_back({{"foot", {d.foot.u, d.foot.v}}, {"box", {d.left, d.top, d.width, d.height}},
+                      {"ground", {d.ground.x, d.ground.y}}, {"distance_m", d.distance_m}, {"bearing_rad", d.bearing_rad},
+                      {"verified", d.verified}, {"confidence", d.confidence}});
+  }
+  out["robots"] = std::move(robots);
   return out;
 }
 
@@ -228,8 +237,11 @@ std::string stage_name(std::size_t stage) {
     case Stage::kBall: return "ball";
     case Stage::kScan: return "scan";
     case Stage::kRansac: return "ransac";
-    default: return "stage " + std::to_string(stage);  // a stage added without a name here
+    case Stage::kCircle: return "circle";
+    case Stage::kRobots: return "robots";
+    case Stage::kCount: break;  // no default: a stage added without a name here is a -Wswitch error
   }
+  return "stage " + std::to_string(stage);
 }
 
 namespace {

@@ -16,7 +16,12 @@
 
 namespace ringlet::vision {
 
+/// Which detector finds the ball: orange blobs (this file) or the SPL's black-and-white ball
+/// (bw_ball.hpp: candidates by size + HOG/SVM verification).
+enum class BallMode : std::uint8_t { kOrange, kBlackWhite };
+
 struct BallParams {
+  BallMode mode = BallMode::kOrange;
   int seed_stride = 4;          // px between seed rows and columns (rounded to the class step)
   int min_pixels = 6;           // smaller blobs (in image pixels) are noise
   int max_blobs = 8;            // blobs grown per frame at most
@@ -30,7 +35,12 @@ struct BallDetection {
   hal::RobotPoint ground{};     // ball centre, robot frame
   bool ground_valid = false;    // false when the centre ray does not reach the ball plane
   int pixels = 0;               // image pixels covered (samples × step²)
-  double confidence = 0.0;      // [0, 1]: roundness × fill × size × radius consistency
+  double confidence = 0.0;      // [0, 1]: roundness × fill × size × radius consistency (orange);
+                                // from the SVM margin (black and white, bw_ball.hpp)
+  double distance_m = 0.0;      // of `ground` from the robot's origin, when ground_valid
+  double bearing_rad = 0.0;     // atan2(y, x) of `ground`: positive to the left
+  bool verified = false;        // black and white: accepted by the HOG/SVM classifier
+  double score = 0.0;           // black and white: SVM decision value (0 when not classified)
 };
 
 class BallDetector {

@@ -1,23 +1,27 @@
 #pragma once
 // The vision step for one frame, inside a time budget:
-//   horizon → classify (below the horizon) → ball → scan lines → centre circle → RANSAC lines.
+//   horizon → classify (below the horizon) → ball → robots → scan lines → centre circle → RANSAC lines.
 // The ball goes before the lines because it matters more and costs little; RANSAC is last
 // because it is the part that degrades gracefully (its trials can be cut).
 //
 // Everything is allocated in the constructor; process() allocates nothing.
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "ringlet/hal/camera.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/sensors.hpp"
 #include "ringlet/vision/ball.hpp"
+#include "ringlet/vision/bw_ball.hpp"
 #include "ringlet/vision/class_image.hpp"
 #include "ringlet/vision/colour_table.hpp"
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/deadline.hpp"
 #include "ringlet/vision/ransac.hpp"
+#include "ringlet/vision/robots.hpp"
 #include "ringlet/vision/scan_points.hpp"
 
 namespace ringlet::vision {
@@ -32,6 +36,8 @@ struct DegradeProfile {
   int ransac_skip = -1;   // RANSAC_SKIP (−1: ransac.skip): a sparser scan keeps more of its fewer candidates, so
                           // that lines keep enough points while trials × points still shrinks
   int circle_trials = -1; // centre circle hypotheses (−1: ransac.circle.max_trials)
+  int ball_classify = 4;  // black-and-white ball candidates given to the HOG/SVM (0: classifier dropped)
+  int robot_classify = 2; // robot candidates given to the HOG/SVM (0: classifier dropped)
 };
 
 inline constexpr int kDegradeLevels = 3;
@@ -43,19 +49,23 @@ struct VisionConfig {
   std::size_t max_candidates = 4096;
   ScanParams scan{};
   RansacParams ransac{};
-  BallParams ball{};
+  BallParams ball{};                     // ball.mode picks the orange or the black-and-white detector
+  BwBallParams bw_ball{};
+  bool robots = true;                    // the robot stage (verified only with a robot model installed)
+  RobotParams robot{};
   // Level 0 = full (the RansacParams: Mi-Pal's 30 trials, skip 10); 1 = every other pixel
-  // classified, scan lines twice as far apart, half the trials; 2 = least.
+  // classified, scan lines twice as far apart, half the trials; 2 = least. The HOG classifiers go
+  // first: fewer candidates classified at level 1, none at level 2.
   std::array<DegradeProfile, kDegradeLevels> degrade{{
-      {1, 3, -1, -1, 4, -1, -1},
-      {2, 4, 15, 6, 6, 5, 20},
-      {2, 8, 8, 4, 8, 3, 10},
+      {1, 3, -1, -1, 4, -1, -1, 4, 2},
+      {2, 4, 15, 6, 6, 5, 20, 2, 1},
+      {2, 8, 8, 4, 8, 3, 10, 0, 0},
   }};
 };
 
-// In enum order, not run order: the centre circle runs between the scan and RANSAC (its points
-// leave the line rounds' pool), it was added last and keeps the older stages' bits.
-enum class Stage : std::uint8_t { kHorizon, kClassify, kBall, kScan, kRansac, kCircle, kCount };
+// In enum order, not run order (horizon, classify, ball, robots, scan, circle, RANSAC): the later
+// stages were appended so that the older stages keep their bits in CutStats::stages_skipped.
+enum class Stage : std::uint8_t { kHorizon, kClassify, kBall, kScan, kRansac, kCircle, kRobots, kCount };
 inline constexpr std::size_t kStageCount = static_cast<std::size_t>(Stage::kCount);
 
 enum class VisionStatus : std::uint8_t {
@@ -69,6 +79,7 @@ struct CutStats {
   int trials_skipped = 0;            // RANSAC trials cut by the deadline
   bool lines_not_extracted = false;  // extraction stopped before the points ran out
   int points_left = 0;               // used candidate points never examined
+  int classifications_cut = 0;       // ball and robot candidates not classified (deadline)
 };
 
 struct VisionResult {
@@ -81,7 +92,9 @@ struct VisionResult {
   std::array<FieldLine, kMaxLines> lines{};
   std::size_t line_count = 0;
   CentreCircle circle{};
-  BallDetection ball{};
+  BallDetection ball{};         // the best ball (balls.balls[0] when balls.count > 0)
+  BallList balls{};             // black and white: up to kMaxBalls; orange: the one ball
+  RobotList robots{};
   int candidates = 0;           // scan points found
   int candidates_dropped = 0;   // beyond max_candidates
   ScanStats scan{};
@@ -110,6 +123,13 @@ class VisionPipeline {
     return process(frame, hal::CameraPosture{hal::BodyTilt{}, head}, deadline, degrade_level);
   }
 
+  /// Installs a HOG/SVM model as the ball's or the robots' classifier (by its target), at start-up
+  /// (allocates). Returns "" or why not (a model that fails validate()).
+  [[nodiscard]] std::string set_classifier(HogSvm model);
+  [[nodiscard]] bool has_classifier(HogTarget target) const noexcept {
+    return target == HogTarget::kBall ? ball_svm_.has_value() : robot_svm_.has_value();
+  }
+
   [[nodiscard]] const VisionResult& result() const noexcept { return result_; }
   [[nodiscard]] const ClassImage& classes() const noexcept { return classes_; }
   [[nodiscard]] const CandidateBuffer& candidates() const noexcept { return candidates_; }
@@ -126,6 +146,10 @@ class VisionPipeline {
   RansacLineFinder ransac_;
   CentreCircleFinder circle_;
   BallDetector ball_;
+  BwBallDetector bw_ball_;
+  RobotDetector robots_;
+  std::optional<HogClassifier> ball_svm_;
+  std::optional<HogClassifier> robot_svm_;
   VisionResult result_;
 };
 

@@ -1,0 +1,160 @@
+// The black-and-white ball's candidates and the robots' foot points against the camera model:
+// the expected radius is fx·R/depth, a rendered SPL ball yields a candidate at its projected centre
+// with that radius, and a robot-shaped column standing on the field is found at its foot point.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ringlet/vision/bw_ball.hpp"
+#include "ringlet/vision/horizon.hpp"
+#include "ringlet/vision/messages.hpp"
+#include "ringlet/vision/pipeline.hpp"
+#include "ringlet/vision/robots.hpp"
+#include "synthetic_field.hpp"
+
+namespace ringlet::vision {
+namespace {
+
+using testing::Camera;
+
+TEST(BwBall, ExpectedRadiusIsFocalLengthTimesRadiusOverDepth) {
+  Camera cam;
+  const hal::CameraPose pose = cam.pose();
+  BwBallDetector d(BwBallParams{});
+  for (const double x : {0.8, 1.5, 3.0, 5.0}) {
+    const hal::Vec3 centre{x, 0.3, 0.05};
+    const auto px = hal::project(cam.k, pose, centre);
+    ASSERT_TRUE(px.has_value());
+    hal::RobotPoint ground{};
+    const double r = d.expected_radius_px(cam.k, pose, *px, &ground);
+    const double depth = std::hypot(centre.x - pose.position.x, centre.y - pose.position.y, centre.z - pose.position.z);
+    EXPECT_NEAR(r, cam.k.fx * 0.05 / depth, 1e-6 * r);
+    EXPECT_NEAR(ground.x, x, 1e-6);
+    EXPECT_NEAR(ground.y, 0.3, 1e-6);
+  }
+  // Above the horizon: no ball plane, no radius.
+  EXPECT_EQ(d.expected_radius_px(cam.k, pose, {320, 0}), 0.0);
+}
+
+TEST(BwBall, RenderedBallGivesACandidateOfTheRightSize) {
+  Camera cam;
+  const hal::CameraPose pose = cam.pose();
+  for (const hal::RobotPoint at : {hal::RobotPoint{0.9, 0.1}, hal::RobotPoint{1.6, -0.3}, hal::RobotPoint{3.0, 0.4}}) {
+    testing::Scene scene = testing::field_scene();
+    scene.ball = at;
+    scene.ball_black_white = true;
+    const auto frame = testing::render(scene, cam, hal::PixelFormat::kYuyv);
+    ClassImage classes(cam.k.width, cam.k.height);
+    std::vector<int> rows(static_cast<std::size_t>(cam.k.width));
+    const int horizon = horizon_rows(cam.k, pose, 2, rows);
+    ASSERT_TRUE(classes.classify(frame.view, ColourTable::from_thresholds({}), horizon, 1));
+    BwBallDetector d(BwBallParams{});
+    BallList out;
+    d.detect(classes, frame.view, cam.k, pose, 4, nullptr, 0, {}, out);
+    const auto truth = hal::project(cam.k, pose, {at.x, at.y, 0.05});
+    ASSERT_TRUE(truth.has_value());
+    const double r_true = d.expected_radius_px(cam.k, pose, *truth);
+    bool found = false;
+    for (const BallCandidate& c : d.candidates()) {
+      if (std::hypot(c.centre.u - truth->u, c.centre.v - truth->v) <= 0.5 * r_true + 2.0) {
+        found = true;
+        EXPECT_NEAR(c.radius, r_true, 0.15 * r_true);
+      }
+    }
+    EXPECT_TRUE(found) << "ball at " << at.x << ", " << at.y << ": " << d.candidates().size() << " candidates";
+    // Unverified: reported with a low confidence.
+    ASSERT_GT(out.count, 0U);
+    EXPECT_FALSE(out.balls[0].verified);
+    EXPECT_LE(out.balls[0].confidence, 0.3);
+  }
+}
+
+// A robot drawn as a white column in the image, standing at a ground point: its foot row from the
+// camera model, its height the projected 0.574 m.
+TEST(Robots, ColumnStandingOnTheFieldIsFoundAtItsFoot) {
+  Camera cam;
+  const hal::CameraPose pose = cam.pose();
+  testing::Scene scene;  // bare field
+  auto frame = testing::render(scene, cam, hal::PixelFormat::kGray8);
+  // Gray8 classifies with U = V = 128: make the field a thresholds table where grey 100 is field.
+  ColourThresholds t;
+  t.field = {50, 150, 100, 156, 100, 156};
+  t.line = {200, 255, 100, 156, 100, 156};
+  t.ball = {0, 0, 0, 0, 0, 0};
+  const ColourTable table = ColourTable::from_thresholds(t);
+  std::vector<std::uint8_t> img(static_cast<std::size_t>(cam.k.width * cam.k.height), 100);
+  const hal::RobotPoint at{1.5, 0.2};
+  RobotDetector d(RobotParams{});
+  const auto foot = hal::project(cam.k, pose, {at.x, at.y, 0.0});
+  ASSERT_TRUE(foot.has_value());
+  const double h = d.expected_height_px(cam.k, pose, at);
+  ASSERT_GT(h, 50.0);
+  for (int y = std::max(0, static_cast<int>(foot->v - h)); y < static_cast<int>(foot->v); ++y) {
+    for (int x = static_cast<int>(foot->u - 0.25 * h); x < static_cast<int>(foot->u + 0.25 * h); ++x) {
+      img[static_cast<std::size_t>(y * cam.k.width + x)] = 230;
+    }
+  }
+  hal::FrameView view = frame.view;
+  view.data = img.data();
+  view.stride = cam.k.width;
+  view.format = hal::PixelFormat::kGray8;
+  ClassImage classes(cam.k.width, cam.k.height);
+  std::vector<int> rows(static_cast<std::size_t>(cam.k.width));
+  ASSERT_TRUE(classes.classify(view, table, horizon_rows(cam.k, pose, 2, rows), 1));
+  RobotList out;
+  d.detect(classes, view, cam.k, pose, 4, nullptr, 0, {}, out);
+  ASSERT_EQ(out.count, 1U);
+  const RobotDetection& r = out.robots[0];
+  EXPECT_FALSE(r.verified);
+  EXPECT_NEAR(r.foot.u, foot->u, 4.0);
+  EXPECT_NEAR(r.foot.v, foot->v, 2.0);
+  EXPECT_NEAR(r.distance_m, std::hypot(at.x, at.y), 0.03 * std::hypot(at.x, at.y));
+  EXPECT_NEAR(r.bearing_rad, std::atan2(at.y, at.x), 0.02);
+  EXPECT_NEAR(r.height, h, 0.05 * h);
+}
+
+// The window placements the trainer and the detectors share.
+TEST(HogWindows, BallAndRobotWindowsFollowTheParameters) {
+  const WindowPlacement b = ball_window(BwBallParams{}, HogParams::ball(), {100, 80}, 10);
+  EXPECT_DOUBLE_EQ(b.scale, 1.6 * 20 / 32);
+  EXPECT_DOUBLE_EQ(b.left, 100 - 16);
+  EXPECT_DOUBLE_EQ(b.top, 80 - 16);
+  const WindowPlacement r = robot_window(RobotParams{}, HogParams::robot(), {200, 300}, 112);
+  EXPECT_DOUBLE_EQ(r.scale, 2.0);                 // 112 × 64/56 = 128 px high → 2 px per window px
+  EXPECT_DOUBLE_EQ(r.top, 300 - 60 * 2.0);        // the foot at window row 60
+  EXPECT_DOUBLE_EQ(r.left, 200 - 16 * 2.0);
+}
+
+}  // namespace
+}  // namespace ringlet::vision
+
+namespace ringlet::vision {
+namespace {
+
+// RobotDetections carries the pipeline's robots and survives the text round trip.
+TEST(Robots, WhiteboardMessageHoldsTheRobots) {
+  static_assert(std::tuple_size_v<decltype(wb::RobotDetections{}.foot_x)> == kMaxRobots);
+  VisionResult r;
+  r.sequence = 9;
+  r.robots.count = 2;
+  r.robots.robots[0].ground = {1.5, 0.2};
+  r.robots.robots[0].distance_m = std::hypot(1.5, 0.2);
+  r.robots.robots[0].bearing_rad = std::atan2(0.2, 1.5);
+  r.robots.robots[0].verified = true;
+  r.robots.robots[0].confidence = 0.8;
+  r.robots.robots[1].ground = {2.5, -0.7};
+  const wb::RobotDetections m = to_robot_detections(r);
+  EXPECT_EQ(m.sequence, 9U);
+  EXPECT_EQ(m.count, 2);
+  EXPECT_EQ(m.foot_x[0], 1.5);
+  EXPECT_EQ(m.foot_y[1], -0.7);
+  EXPECT_EQ(m.verified[0], 1);
+  EXPECT_EQ(m.verified[1], 0);
+  EXPECT_EQ(m.confidence[0], 0.8);
+  const auto back = wb::RobotDetections::from_string(m.description());
+  ASSERT_TRUE(back.has_value()) << back.error();
+  EXPECT_EQ(back.value(), m);
+}
+
+}  // namespace
+}  // namespace ringlet::vision

@@ -1,0 +1,98 @@
+#pragma once
+// The SPL ball (black and white since 2016): candidates of the right size for their distance,
+// verified by a HOG + linear SVM classifier (hog_svm.hpp).
+//
+// Candidates: vertical scan columns every `stride` px walk the class image below the horizon and
+// collect runs of non-field samples (line, other or ball class: the ball's white shows as line, its
+// black patches as other). The camera model gives, for the run's centre, the radius a ball there
+// would have, r = fx·R / depth (the ray meets the plane z = R at the ball's centre); a run is a
+// candidate when its length is 0.6–1.6 × 2r. A run that is too long (a ball in front of a robot's
+// feet or on a line seen lengthwise) gives a candidate at its bottom. Each candidate is re-centred
+// along its row and column; candidates closer than r to a better one are merged. They are ranked by
+// how well their extent matches 2r.
+//
+// Verification: the best `max_verified` candidates each get a window of `window_diameters` × 2r
+// image px resampled to the model's window, a HOG descriptor and an SVM score; a candidate is a
+// ball when score ≥ the model's threshold. Without a classifier (none loaded, or the degrade level
+// drops it) the best-ranked candidate is reported unverified with a low confidence (≤ 0.3).
+#include <array>
+#include <cstddef>
+#include <span>
+
+#include "ringlet/hal/camera.hpp"
+#include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/vision/ball.hpp"
+#include "ringlet/vision/class_image.hpp"
+#include "ringlet/vision/deadline.hpp"
+#include "ringlet/vision/hog_svm.hpp"
+#include "ringlet/vision/resample.hpp"
+
+namespace ringlet::vision {
+
+inline constexpr std::size_t kMaxBalls = 4;          // reported per frame
+inline constexpr std::size_t kMaxBallCandidates = 32;
+
+struct BwBallParams {
+  double radius_m = 0.05;
+  double min_radius_px = 3.0;      // smaller expected balls (≈ 10 m on the NAO) are not looked for
+  double min_extent = 0.6;         // run length / expected diameter, accepted range
+  double max_extent = 1.6;
+  double window_diameters = 1.6;   // HOG window side / expected ball diameter
+  double merge_radii = 1.0;        // candidates closer than this × r merge
+};
+
+/// Up to kMaxBalls balls, best first, and what the detector did.
+struct BallList {
+  std::array<BallDetection, kMaxBalls> balls{};
+  std::size_t count = 0;
+  int candidates = 0;      // after merging
+  int classified = 0;      // candidates given to the SVM
+  int classifications_cut = 0;  // candidates not classified because the deadline passed
+};
+
+/// A ball candidate before verification.
+struct BallCandidate {
+  hal::Pixel centre{};
+  double radius = 0.0;    // expected, px (camera model)
+  double extent = 0.0;    // how well the blob's extent matches the expected diameter (0..1]
+};
+
+class BwBallDetector {
+ public:
+  explicit BwBallDetector(const BwBallParams& params) : params_(params) {}
+
+  /// `classifier` may be null; `max_verified` ≤ 0 also skips it. The deadline is checked before
+  /// every classification.
+  void detect(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
+              const hal::CameraPose& pose, int stride, HogClassifier* classifier, int max_verified,
+              const Deadline& deadline, BallList& out) noexcept;
+
+  /// The image radius (px) of a ball whose centre is seen through pixel `px`; 0 when the ray does
+  /// not meet the ball plane (at or above the horizon of the plane z = R).
+  [[nodiscard]] double expected_radius_px(const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+                                          const hal::Pixel& px, hal::RobotPoint* ground = nullptr) const noexcept;
+
+  /// The last frame's candidates, best ranked first.
+  [[nodiscard]] std::span<const BallCandidate> candidates() const noexcept { return {cands_.data(), count_}; }
+
+ private:
+  using Candidate = BallCandidate;
+  void add(const Candidate& c) noexcept;
+
+  BwBallParams params_;
+  std::array<Candidate, kMaxBallCandidates> cands_{};
+  std::size_t count_ = 0;
+};
+
+/// The HOG window for a ball of image radius `radius_px` centred at `centre` (the detector and
+/// the trainer both crop with this, so they see the same patches).
+[[nodiscard]] WindowPlacement ball_window(const BwBallParams& p, const HogParams& hog, const hal::Pixel& centre,
+                                          double radius_px) noexcept;
+
+/// (0, 1): ½ at the threshold, rising with the margin (a rational sigmoid: basic arithmetic only).
+[[nodiscard]] inline double svm_confidence(double score, double threshold) noexcept {
+  const double z = score - threshold;
+  return 0.5 + 0.5 * z / (1.0 + (z < 0 ? -z : z));
+}
+
+}  // namespace ringlet::vision

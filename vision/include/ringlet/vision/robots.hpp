@@ -1,0 +1,92 @@
+#pragma once
+// NAO robots (Mi-Pal's shape recognition by HOG + linear SVM): obstacles, reported at the point
+// where their feet touch the ground.
+//
+// Candidates: vertical scan columns every `stride` px collect runs of non-field samples (a NAO is
+// white and grey) that end on the field below (the foot point: the run's lowest row, the ray
+// through it meets the ground). At that foot point the camera model gives the image height of a
+// standing NAO (0.574 m: the projection of the point that far above the foot); a run counts when
+// it is at least `min_height_share` of that tall or reaches the top of the classified area (the
+// robot continues above the horizon margin). Neighbouring columns whose foot rows agree form one
+// candidate (the two legs and the gap between them included); a candidate narrower than
+// `min_width_share` of a NAO's width is a line or a post.
+//
+// Verification: the best `max_verified` candidates (widest first) get a window `window_height`
+// robot heights tall (the robot's foot at row `foot_row` of the model's window, centred on the
+// candidate), resampled to the model's window (32 × 64), HOG and the SVM score; score ≥ the
+// model's threshold is a robot. Without a classifier the candidates are reported unverified
+// (confidence ≤ 0.3): still obstacles, just not known to be robots.
+#include <array>
+#include <cstddef>
+
+#include "ringlet/hal/camera.hpp"
+#include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/vision/class_image.hpp"
+#include "ringlet/vision/deadline.hpp"
+#include "ringlet/vision/hog_svm.hpp"
+#include "ringlet/vision/resample.hpp"
+
+namespace ringlet::vision {
+
+inline constexpr std::size_t kMaxRobots = 6;
+inline constexpr std::size_t kMaxRobotCandidates = 16;
+
+struct RobotParams {
+  double height_m = 0.574;         // a standing NAO
+  double width_m = 0.31;           // its shoulders (arms down)
+  double min_height_px = 16.0;     // robots smaller in the image (≈ 9 m away) are not looked for
+  double min_height_share = 0.4;   // run length / expected height
+  double min_width_share = 0.25;   // candidate width / expected width
+  double window_height = 64.0 / 56.0;  // window height / expected robot height (margin above and below)
+  double foot_row = 60.0 / 64.0;   // where the foot lies in the window, as a share of its height
+};
+
+struct RobotDetection {
+  double left = 0.0, top = 0.0, width = 0.0, height = 0.0;  // image box of the expected robot (px)
+  hal::Pixel foot{};               // foot point (bottom centre of the candidate)
+  hal::RobotPoint ground{};        // where the feet touch the ground, robot frame
+  double distance_m = 0.0;
+  double bearing_rad = 0.0;        // atan2(y, x): positive to the left
+  bool verified = false;           // accepted by the classifier
+  double score = 0.0;              // SVM decision value (0 when not classified)
+  double confidence = 0.0;         // [0, 1]
+};
+
+struct RobotList {
+  std::array<RobotDetection, kMaxRobots> robots{};
+  std::size_t count = 0;
+  int candidates = 0;
+  int classified = 0;
+  int classifications_cut = 0;
+};
+
+/// The HOG window for a robot whose feet are at `foot` and who is `height_px` tall in the image
+/// (the detector and the trainer both crop with this).
+[[nodiscard]] WindowPlacement robot_window(const RobotParams& p, const HogParams& hog, const hal::Pixel& foot,
+                                           double height_px) noexcept;
+
+class RobotDetector {
+ public:
+  explicit RobotDetector(const RobotParams& params) : params_(params) {}
+
+  void detect(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
+              const hal::CameraPose& pose, int stride, HogClassifier* classifier, int max_verified,
+              const Deadline& deadline, RobotList& out) noexcept;
+
+  /// The image height (px) of a standing robot whose feet are at ground point `g`; 0 when it
+  /// cannot be projected.
+  [[nodiscard]] double expected_height_px(const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+                                          const hal::RobotPoint& g) const noexcept;
+
+ private:
+  struct Candidate {
+    int x_min = 0, x_max = 0;  // columns (inclusive)
+    int foot_row = 0;          // lowest non-field row + step (the first field row below)
+    int columns = 0;
+  };
+  RobotParams params_;
+  std::array<Candidate, kMaxRobotCandidates> cands_{};
+  std::size_t count_ = 0;
+};
+
+}  // namespace ringlet::vision

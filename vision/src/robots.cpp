@@ -1,0 +1,137 @@
+// NAO robots: tall non-field columns standing on the field, verified by HOG + SVM (robots.hpp).
+#include "ringlet/vision/robots.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ringlet/vision/bw_ball.hpp"  // svm_confidence
+
+namespace ringlet::vision {
+
+WindowPlacement robot_window(const RobotParams& p, const HogParams& hog, const hal::Pixel& foot,
+                             double height_px) noexcept {
+  const double win_h = p.window_height * height_px;
+  const double scale = win_h / static_cast<double>(hog.window_height);
+  const double win_w = scale * static_cast<double>(hog.window_width);
+  return {foot.u - 0.5 * win_w, foot.v - p.foot_row * win_h, scale};
+}
+
+double RobotDetector::expected_height_px(const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+                                         const hal::RobotPoint& g) const noexcept {
+  const auto foot = hal::project(k, pose, {g.x, g.y, 0.0});
+  const auto head = hal::project(k, pose, {g.x, g.y, params_.height_m});
+  if (!foot || !head) return 0.0;
+  return std::max(0.0, foot->v - head->v);
+}
+
+void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
+                           const hal::CameraPose& pose, int stride, HogClassifier* classifier, int max_verified,
+                           const Deadline& deadline, RobotList& out) noexcept {
+  out = RobotList{};
+  count_ = 0;
+  const int s = classes.step();
+  const int col_stride = std::max(s, (std::max(stride, 1) + s - 1) / s * s);
+  const int first = classes.first_row();
+  const int h = classes.height();
+  const auto height_at = [&](double u, double v, hal::RobotPoint* g) {
+    const auto p = hal::pixel_to_ground(k, pose, {u, v});
+    if (!p) return 0.0;
+    if (g != nullptr) *g = *p;
+    return expected_height_px(k, pose, *p);
+  };
+
+  Candidate open{};
+  bool has_open = false;
+  const auto close = [&]() {
+    if (!has_open) return;
+    has_open = false;
+    const double u = 0.5 * (open.x_min + open.x_max + s);
+    const double eh = height_at(u, open.foot_row, nullptr);
+    const double width = open.x_max - open.x_min + s;
+    if (eh <= 0.0 || width < params_.min_width_share * eh * params_.width_m / params_.height_m) return;
+    if (count_ < cands_.size()) {
+      cands_[count_++] = open;
+    } else {  // full: keep the widest
+      auto narrowest = std::min_element(cands_.begin(), cands_.end(), [](const Candidate& a, const Candidate& b) {
+        return a.x_max - a.x_min < b.x_max - b.x_min;
+      });
+      if (narrowest->x_max - narrowest->x_min < open.x_max - open.x_min) *narrowest = open;
+    }
+  };
+
+  for (int x = 0; x < classes.width(); x += col_stride) {
+    // The longest qualifying run of this column that stands on the field (the lowest one wins ties).
+    int best_foot = -1;
+    int run_start = -1;
+    for (int y = first; y < h; y += s) {
+      const bool nf = classes.at(x, y) != ColourClass::kField;
+      if (nf && run_start < 0) run_start = y;
+      if (nf || run_start < 0) continue;
+      const double eh = height_at(x + 0.5 * s, y, nullptr);  // y: the first field row below the run
+      if (eh >= params_.min_height_px &&
+          (y - run_start >= params_.min_height_share * eh || run_start == first)) {
+        best_foot = y;
+      }
+      run_start = -1;
+    }
+    if (best_foot < 0) {
+      if (has_open && x - open.x_max > 2 * col_stride) close();
+      continue;
+    }
+    const double eh = height_at(x + 0.5 * s, best_foot, nullptr);
+    const int tolerance = std::max(2 * s, static_cast<int>(0.15 * eh));
+    if (has_open && x - open.x_max <= 2 * col_stride && std::abs(best_foot - open.foot_row) <= tolerance) {
+      open.x_max = x;
+      open.foot_row = std::max(open.foot_row, best_foot);
+      ++open.columns;
+    } else {
+      close();
+      open = {x, x, best_foot, 1};
+      has_open = true;
+    }
+  }
+  close();
+  out.candidates = static_cast<int>(count_);
+  // Widest first (insertion sort: stable, no allocation).
+  for (std::size_t i = 1; i < count_; ++i) {
+    const Candidate c = cands_[i];
+    std::size_t j = i;
+    for (; j > 0 && cands_[j - 1].x_max - cands_[j - 1].x_min < c.x_max - c.x_min; --j) cands_[j] = cands_[j - 1];
+    cands_[j] = c;
+  }
+
+  const bool use_classifier = classifier != nullptr && max_verified > 0;
+  const std::size_t n = use_classifier ? std::min(count_, static_cast<std::size_t>(max_verified)) : count_;
+  for (std::size_t i = 0; i < n && out.count < kMaxRobots; ++i) {
+    const Candidate& c = cands_[i];
+    RobotDetection r;
+    const double u = 0.5 * (c.x_min + c.x_max + s);
+    const double eh = height_at(u, c.foot_row, &r.ground);
+    if (eh <= 0.0) continue;
+    r.foot = {u, static_cast<double>(c.foot_row)};
+    r.height = eh;
+    r.width = eh * params_.width_m / params_.height_m;
+    r.left = u - 0.5 * r.width;
+    r.top = c.foot_row - eh;
+    r.distance_m = std::hypot(r.ground.x, r.ground.y);
+    r.bearing_rad = std::atan2(r.ground.y, r.ground.x);
+    if (use_classifier) {
+      if (deadline.expired()) {
+        out.classifications_cut = static_cast<int>(n - i);
+        break;
+      }
+      const WindowPlacement w = robot_window(params_, classifier->model().params(), r.foot, eh);
+      r.score = classifier->score_window(frame, w.left, w.top, w.scale);
+      ++out.classified;
+      if (r.score < classifier->model().threshold()) continue;
+      r.verified = true;
+      r.confidence = svm_confidence(r.score, classifier->model().threshold());
+    } else {
+      const double width = c.x_max - c.x_min + s;
+      r.confidence = 0.3 * std::min(1.0, width / std::max(r.width, 1.0));
+    }
+    out.robots[out.count++] = r;
+  }
+}
+
+}  // namespace ringlet::vision
