@@ -17,6 +17,7 @@
 #include "ringlet/vision/colour_table.hpp"
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/deadline.hpp"
+#include "ringlet/vision/field_colour.hpp"
 #include "ringlet/vision/ransac.hpp"
 #include "ringlet/vision/scan_points.hpp"
 
@@ -43,6 +44,10 @@ struct VisionConfig {
   ScanParams scan{};
   RansacParams ransac{};
   BallParams ball{};
+  // Colour: adaptive (the field's colour estimated from each frame, the table as fallback when
+  // none is found) or the static table always (field_colour.hpp).
+  ColourMode colour_mode = ColourMode::kAdaptive;
+  AdaptiveColourParams adaptive{};
   // Level 0 = full (the RansacParams: Mi-Pal's 30 trials, skip 10); 1 = every other pixel
   // classified, scan lines twice as far apart, half the trials; 2 = least.
   std::array<DegradeProfile, kDegradeLevels> degrade{{
@@ -78,6 +83,7 @@ struct VisionResult {
   std::size_t line_count = 0;
   CentreCircle circle{};
   BallDetection ball{};
+  FieldColourEstimate field_colour{};  // the field colour the frame was classified with (source kTable: the table)
   int candidates = 0;           // scan points found
   int candidates_dropped = 0;   // beyond max_candidates
   ScanStats scan{};
@@ -103,10 +109,13 @@ class VisionPipeline {
   [[nodiscard]] const CandidateBuffer& candidates() const noexcept { return candidates_; }
   [[nodiscard]] const VisionConfig& config() const noexcept { return config_; }
   [[nodiscard]] const ColourTable& table() const noexcept { return table_; }
+  [[nodiscard]] const AdaptiveClassifier& adaptive() const noexcept { return adaptive_; }
 
  private:
   VisionConfig config_;
   ColourTable table_;
+  FieldColourEstimator field_colour_;
+  AdaptiveClassifier adaptive_;
   ClassImage classes_;
   std::vector<int> first_row_;
   LineScanner scanner_;

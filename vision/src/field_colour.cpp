@@ -1,0 +1,261 @@
+// The field's colour from the frame itself (FieldColourEstimator) and the per-frame tables that
+// classify relative to it (AdaptiveClassifier). See field_colour.hpp for the method.
+#include "ringlet/vision/field_colour.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace ringlet::vision {
+namespace {
+
+constexpr int kHistBits = 5;  // chroma histogram: 32 × 32 bins of 8 codes
+constexpr int kHistBins = 1 << kHistBits;
+
+// Calls visit(x, y, yuv) for every sample of the sparse grid below the horizon.
+template <typename Visit>
+void for_each_sample(const hal::FrameView& f, std::span<const int> first_row, int stride, Visit&& visit) noexcept {
+  const int n = std::min(f.width, static_cast<int>(first_row.size()));
+  for (int y = stride / 2; y < f.height; y += stride) {
+    const std::uint8_t* row = f.data + static_cast<std::size_t>(y) * static_cast<std::size_t>(f.stride);
+    for (int x = stride / 2; x < n; x += stride) {
+      if (y < first_row[static_cast<std::size_t>(x)]) continue;
+      Yuv p{};
+      switch (f.format) {
+        case hal::PixelFormat::kYuyv: {
+          const std::uint8_t* pair = row + 4 * static_cast<std::size_t>(x / 2);
+          const bool has_pair = (x | 1) < f.width;
+          p = {row[2 * static_cast<std::size_t>(x)], pair[1], has_pair ? pair[3] : std::uint8_t{128}};
+          break;
+        }
+        case hal::PixelFormat::kBgr8: {
+          const std::uint8_t* q = row + 3 * static_cast<std::size_t>(x);
+          p = bgr_to_yuv(q[0], q[1], q[2]);
+          break;
+        }
+        case hal::PixelFormat::kGray8: p = {row[x], 128, 128}; break;
+      }
+      visit(x, y, p);
+    }
+  }
+}
+
+// The value below which `fraction` of a 256-bin histogram's `total` lies.
+int percentile(const std::array<std::uint16_t, 256>& h, int total, int num, int den) noexcept {
+  const long target = static_cast<long>(total) * num / den;
+  long seen = 0;
+  for (int i = 0; i < 256; ++i) {
+    seen += h[static_cast<std::size_t>(i)];
+    if (seen > target) return i;
+  }
+  return 255;
+}
+
+std::uint8_t clamp_byte(long x) noexcept { return static_cast<std::uint8_t>(std::clamp(x, 0L, 255L)); }
+
+// s + w/256 · (m − s), rounded half away from zero: integer, so every host agrees.
+std::uint8_t blend(std::uint8_t s, std::uint8_t m, int w) noexcept {
+  const int d = static_cast<int>(m) - static_cast<int>(s);
+  return clamp_byte(static_cast<long>(s) + (d * w + (d >= 0 ? 128 : -128)) / 256);
+}
+
+}  // namespace
+
+FieldColourEstimate FieldColourEstimator::measure(const hal::FrameView& frame, std::span<const int> first_row,
+                                                  const AdaptiveColourParams& params) noexcept {
+  FieldColourEstimate e;
+  if (frame.data == nullptr || frame.width <= 0 || frame.height <= 0) return e;
+  const int stride = std::max(params.sample_stride, 1);
+
+  // Pass 1: the coarse chroma histogram, with the chroma sums per bin (for the cluster's centre).
+  std::array<std::uint16_t, kHistBins * kHistBins> hist{};
+  std::array<std::uint32_t, kHistBins * kHistBins> sum_u{}, sum_v{};
+  int samples = 0;
+  for_each_sample(frame, first_row, stride, [&](int, int, const Yuv& p) {
+    const std::size_t b = static_cast<std::size_t>(p.u >> (8 - kHistBits)) << kHistBits | (p.v >> (8 - kHistBits));
+    if (hist[b] < 0xFFFF) ++hist[b];
+    sum_u[b] += p.u;
+    sum_v[b] += p.v;
+    ++samples;
+  });
+  e.samples = samples;
+  if (samples < std::max(params.min_samples, 1)) return e;
+
+  // The peak of the 3 × 3-smoothed histogram (a cluster straddling bin borders still wins).
+  long best = -1;
+  int best_u = 0, best_v = 0;
+  for (int bu = 0; bu < kHistBins; ++bu) {
+    for (int bv = 0; bv < kHistBins; ++bv) {
+      long s = 0;
+      for (int du = -1; du <= 1; ++du)
+        for (int dv = -1; dv <= 1; ++dv) {
+          const int u = bu + du, v = bv + dv;
+          if (u >= 0 && u < kHistBins && v >= 0 && v < kHistBins) s += hist[static_cast<std::size_t>(u * kHistBins + v)];
+        }
+      if (s > best) {
+        best = s;
+        best_u = bu;
+        best_v = bv;
+      }
+    }
+  }
+  std::uint64_t su = 0, sv = 0, n = 0;
+  for (int du = -1; du <= 1; ++du)
+    for (int dv = -1; dv <= 1; ++dv) {
+      const int u = best_u + du, v = best_v + dv;
+      if (u < 0 || u >= kHistBins || v < 0 || v >= kHistBins) continue;
+      const auto b = static_cast<std::size_t>(u * kHistBins + v);
+      su += sum_u[b];
+      sv += sum_v[b];
+      n += hist[b];
+    }
+  if (n == 0) return e;
+  const int cu = static_cast<int>((su + n / 2) / n);
+  const int cv = static_cast<int>((sv + n / 2) / n);
+
+  // Pass 2: the cluster's members (chroma within cluster_radius of the centre): Y, U, V histograms.
+  const int r = std::max(params.cluster_radius, 1);
+  std::array<std::uint16_t, 256> hy{}, hu{}, hv{};
+  int members = 0;
+  for_each_sample(frame, first_row, stride, [&](int, int, const Yuv& p) {
+    if (std::abs(p.u - cu) > r || std::abs(p.v - cv) > r) return;
+    ++hy[p.y];
+    ++hu[p.u];
+    ++hv[p.v];
+    ++members;
+  });
+  e.field_samples = members;
+  if (members == 0) return e;
+  const int y25 = percentile(hy, members, 1, 4), y50 = percentile(hy, members, 1, 2), y75 = percentile(hy, members, 3, 4);
+  const int u25 = percentile(hu, members, 1, 4), u50 = percentile(hu, members, 1, 2), u75 = percentile(hu, members, 3, 4);
+  const int v25 = percentile(hv, members, 1, 4), v50 = percentile(hv, members, 1, 2), v75 = percentile(hv, members, 3, 4);
+  e.y = clamp_byte(y50);
+  e.u = clamp_byte(u50);
+  e.v = clamp_byte(v50);
+  e.y_spread = clamp_byte((y75 - y25 + 1) / 2);
+  e.uv_spread = clamp_byte((std::max(u75 - u25, v75 - v25) + 1) / 2);
+  const double fraction = static_cast<double>(members) / static_cast<double>(samples);
+  const bool green = e.u <= params.field_max_u && e.v <= params.field_max_v &&
+                     (128 - e.u) + (128 - e.v) >= params.field_min_chroma;
+  if (fraction < params.min_field_fraction || !green) return e;
+
+  // Pass 3: the local field luminance per image cell (members in the field's luminance band only,
+  // so lines and shadows do not pull it).
+  const int lo = e.y - std::max(params.field_y_below, 1);
+  const int hi = e.y + std::max(params.line_margin, 1);
+  std::array<std::uint32_t, kColourCells> cell_sum{}, cell_n{};
+  for_each_sample(frame, first_row, stride, [&](int x, int y, const Yuv& p) {
+    if (std::abs(p.u - cu) > r || std::abs(p.v - cv) > r || p.y < lo || p.y >= hi) return;
+    const auto c = static_cast<std::size_t>((y * kColourCellsY / frame.height) * kColourCellsX + x * kColourCellsX / frame.width);
+    cell_sum[c] += p.y;
+    ++cell_n[c];
+  });
+  for (std::size_t c = 0; c < e.cell_y.size(); ++c) {
+    e.cell_y[c] = cell_n[c] >= static_cast<std::uint32_t>(std::max(params.min_cell_samples, 1))
+                      ? clamp_byte(static_cast<long>((cell_sum[c] + cell_n[c] / 2) / cell_n[c]))
+                      : e.y;
+  }
+  e.valid = true;
+  e.source = ColourSource::kFrame;
+  e.confidence = fraction;
+  return e;
+}
+
+const FieldColourEstimate& FieldColourEstimator::update(const hal::FrameView& frame, std::span<const int> first_row) noexcept {
+  const FieldColourEstimate m = measure(frame, first_row, params_);
+  FieldColourEstimate& s = smoothed_;
+  if (!m.valid) {
+    if (s.valid && s.age < params_.hold_frames) {
+      ++s.age;
+      s.source = ColourSource::kPrevious;
+      s.confidence *= static_cast<double>(params_.hold_frames - s.age) / static_cast<double>(std::max(params_.hold_frames, 1));
+      s.samples = m.samples;
+      s.field_samples = m.field_samples;
+      s.reset = false;
+    } else {
+      s = m;  // invalid: the pipeline uses its static table
+    }
+    return s;
+  }
+  const bool jump = std::abs(m.y - s.y) > params_.reset_jump_y || std::abs(m.u - s.u) > params_.reset_jump_uv ||
+                    std::abs(m.v - s.v) > params_.reset_jump_uv;
+  if (!s.valid || jump) {
+    const bool was_valid = s.valid;
+    s = m;
+    s.reset = was_valid;
+    return s;
+  }
+  const int w = std::clamp(params_.smoothing, 1, 256);
+  s.y = blend(s.y, m.y, w);
+  s.u = blend(s.u, m.u, w);
+  s.v = blend(s.v, m.v, w);
+  s.y_spread = blend(s.y_spread, m.y_spread, w);
+  s.uv_spread = blend(s.uv_spread, m.uv_spread, w);
+  for (std::size_t c = 0; c < s.cell_y.size(); ++c) s.cell_y[c] = blend(s.cell_y[c], m.cell_y[c], w);
+  s.source = ColourSource::kFrame;
+  s.confidence = m.confidence;
+  s.samples = m.samples;
+  s.field_samples = m.field_samples;
+  s.age = 0;
+  s.reset = false;
+  return s;
+}
+
+void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int height) noexcept {
+  const AdaptiveColourParams& p = params_;
+  width_ = std::max(width, 1);
+  height_ = std::max(height, 1);
+  const int tol = std::clamp(static_cast<int>(std::lround(p.chroma_tolerance_k * e.uv_spread)), p.chroma_tolerance_min,
+                             std::max(p.chroma_tolerance_min, p.chroma_tolerance_max));
+  const int field_distance = std::max(std::abs(e.u - 128), std::abs(e.v - 128));
+  const int neutral = std::max(p.line_max_chroma, static_cast<int>(std::lround(p.line_chroma_ratio * field_distance)));
+  field_u_ = e.u;
+  field_v_ = e.v;
+  tolerance_ = tol;
+  neutral_ = neutral;
+  constexpr int kBins = 1 << kChromaBits;
+  constexpr int kShift = 8 - kChromaBits;
+  for (int bu = 0; bu < kBins; ++bu) {
+    for (int bv = 0; bv < kBins; ++bv) {
+      const int u = (bu << kShift) + (1 << kShift) / 2;
+      const int v = (bv << kShift) + (1 << kShift) / 2;
+      std::uint8_t bits = 0;
+      if (std::abs(u - e.u) <= tol && std::abs(v - e.v) <= tol) bits |= kFieldBit;
+      if (std::abs(u - 128) <= neutral && std::abs(v - 128) <= neutral) bits |= kLineBit;
+      if (u >= p.ball.u_min && u <= p.ball.u_max && v >= p.ball.v_min && v <= p.ball.v_max) bits |= kBallBit;
+      chroma_[static_cast<std::size_t>(bu * kBins + bv)] = bits;
+    }
+  }
+  const int spread_y = e.y_spread;
+  for (int c = 0; c < kColourCells; ++c) {
+    const int fy = e.cell_y[static_cast<std::size_t>(c)];
+    const int margin = std::max({p.line_margin, static_cast<int>(std::lround(p.line_margin_k * spread_y)),
+                                 static_cast<int>(std::lround(p.line_margin_ratio * fy))});
+    const int line_y = fy + margin;  // may exceed 255: no line in that cell
+    const int field_lo = fy - std::max(p.field_y_below, static_cast<int>(std::lround(p.field_y_k * spread_y)));
+    line_y_[static_cast<std::size_t>(c)] = line_y;
+    field_lo_[static_cast<std::size_t>(c)] = field_lo;
+    std::uint8_t* luma = luma_.data() + cell_offset(c);
+    for (int y = 0; y < 256; ++y) {
+      std::uint8_t bits = 0;
+      if (y >= field_lo && y < line_y) bits |= kFieldBit;
+      if (y >= line_y) bits |= kLineBit;
+      if (y >= p.ball.y_min && y <= p.ball.y_max) bits |= kBallBit;
+      luma[y] = bits;
+    }
+  }
+  for (std::size_t i = 0; i < combine_.size(); ++i) {
+    const auto both = static_cast<std::uint8_t>((i >> 3) & i & 7U);
+    ColourClass c = ColourClass::kOther;
+    if ((both & kBallBit) != 0) {
+      c = ColourClass::kBall;
+    } else if ((both & kLineBit) != 0) {
+      c = ColourClass::kLine;
+    } else if ((both & kFieldBit) != 0) {
+      c = ColourClass::kField;
+    }
+    combine_[i] = static_cast<std::uint8_t>(c);
+  }
+}
+
+}  // namespace ringlet::vision
