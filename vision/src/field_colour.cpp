@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 
 namespace ringlet::vision {
 namespace {
@@ -12,43 +13,16 @@ namespace {
 constexpr int kHistBits = 5;  // chroma histogram: 32 × 32 bins of 8 codes
 constexpr int kHistBins = 1 << kHistBits;
 
-// Calls visit(x, y, yuv) for every sample of the sparse grid below the horizon.
-template <typename Visit>
-void for_each_sample(const hal::FrameView& f, std::span<const int> first_row, int stride, Visit&& visit) noexcept {
-  const int n = std::min(f.width, static_cast<int>(first_row.size()));
-  for (int y = stride / 2; y < f.height; y += stride) {
-    const std::uint8_t* row = f.data + static_cast<std::size_t>(y) * static_cast<std::size_t>(f.stride);
-    for (int x = stride / 2; x < n; x += stride) {
-      if (y < first_row[static_cast<std::size_t>(x)]) continue;
-      Yuv p{};
-      switch (f.format) {
-        case hal::PixelFormat::kYuyv: {
-          const std::uint8_t* pair = row + 4 * static_cast<std::size_t>(x / 2);
-          const bool has_pair = (x | 1) < f.width;
-          p = {row[2 * static_cast<std::size_t>(x)], pair[1], has_pair ? pair[3] : std::uint8_t{128}};
-          break;
-        }
-        case hal::PixelFormat::kBgr8: {
-          const std::uint8_t* q = row + 3 * static_cast<std::size_t>(x);
-          p = bgr_to_yuv(q[0], q[1], q[2]);
-          break;
-        }
-        case hal::PixelFormat::kGray8: p = {row[x], 128, 128}; break;
-      }
-      visit(x, y, p);
-    }
-  }
-}
-
-// The value below which `fraction` of a 256-bin histogram's `total` lies.
-int percentile(const std::array<std::uint16_t, 256>& h, int total, int num, int den) noexcept {
+// The bin below which num/den of a histogram's `total` lies.
+template <std::size_t N>
+int percentile(const std::array<std::uint16_t, N>& h, int total, int num, int den) noexcept {
   const long target = static_cast<long>(total) * num / den;
   long seen = 0;
-  for (int i = 0; i < 256; ++i) {
-    seen += h[static_cast<std::size_t>(i)];
-    if (seen > target) return i;
+  for (std::size_t i = 0; i < N; ++i) {
+    seen += h[i];
+    if (seen > target) return static_cast<int>(i);
   }
-  return 255;
+  return static_cast<int>(N) - 1;
 }
 
 std::uint8_t clamp_byte(long x) noexcept { return static_cast<std::uint8_t>(std::clamp(x, 0L, 255L)); }
@@ -61,37 +35,79 @@ std::uint8_t blend(std::uint8_t s, std::uint8_t m, int w) noexcept {
 
 }  // namespace
 
+FieldChromaRule::FieldChromaRule(const FieldColourEstimate& e, const AdaptiveColourParams& p) noexcept
+    : fu(e.u), fv(e.v), fx(e.u - 128), fy(e.v - 128), f2(static_cast<long>(fx) * fx + static_cast<long>(fy) * fy) {
+  tolerance = std::clamp(static_cast<int>(std::lround(p.chroma_tolerance_k * e.uv_spread)), p.chroma_tolerance_min,
+                         std::max(p.chroma_tolerance_min, p.chroma_tolerance_max));
+  t_min256 = std::lround(p.cone_t_min * 256.0);
+  t_max256 = std::lround(p.cone_t_max * 256.0);
+  slope256 = std::lround(p.cone_slope * 256.0);
+  tol_f256 = std::lround(tolerance * std::sqrt(static_cast<double>(f2)) * 256.0);
+  line_max_chroma = p.line_max_chroma;
+}
+
 FieldColourEstimate FieldColourEstimator::measure(const hal::FrameView& frame, std::span<const int> first_row,
-                                                  const AdaptiveColourParams& params) noexcept {
+                                                  const AdaptiveColourParams& params) {
+  // Off the cycle path (tools, tests): the scratch is too big for a stack frame.
+  const auto estimator = std::make_unique<FieldColourEstimator>(params);
+  return estimator->measure_frame(frame, first_row);
+}
+
+FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& frame, std::span<const int> first_row) noexcept {
   FieldColourEstimate e;
   if (frame.data == nullptr || frame.width <= 0 || frame.height <= 0) return e;
-  const int stride = std::max(params.sample_stride, 1);
+  const AdaptiveColourParams& params = params_;
 
-  // Pass 1: the coarse chroma histogram, with the chroma sums per bin (for the cluster's centre).
-  std::array<std::uint16_t, kHistBins * kHistBins> hist{};
-  std::array<std::uint32_t, kHistBins * kHistBins> sum_u{}, sum_v{};
-  int samples = 0;
-  for_each_sample(frame, first_row, stride, [&](int, int, const Yuv& p) {
-    const std::size_t b = static_cast<std::size_t>(p.u >> (8 - kHistBits)) << kHistBits | (p.v >> (8 - kHistBits));
-    if (hist[b] < 0xFFFF) ++hist[b];
-    sum_u[b] += p.u;
-    sum_v[b] += p.v;
-    ++samples;
-  });
-  e.samples = samples;
-  if (samples < std::max(params.min_samples, 1)) return e;
+  // The sparse grid below the horizon, read once (a grid coarser than sample_stride when the
+  // image is large, so at most kMaxColourSamples), with the coarse chroma histogram.
+  int stride = std::max(params.sample_stride, 1);
+  while (static_cast<long>(frame.width / stride + 1) * (frame.height / stride + 1) > kMaxColourSamples) ++stride;
+  chroma_hist_.fill(0);
+  sum_u_.fill(0);
+  sum_v_.fill(0);
+  int n = 0;
+  const int columns = std::min(frame.width, static_cast<int>(first_row.size()));
+  for (int y = stride / 2; y < frame.height; y += stride) {
+    const std::uint8_t* row = frame.data + static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.stride);
+    const int cell_row = (y * kColourCellsY / frame.height) * kColourCellsX;
+    for (int x = stride / 2; x < columns; x += stride) {
+      if (y < first_row[static_cast<std::size_t>(x)]) continue;
+      Yuv p{};
+      switch (frame.format) {
+        case hal::PixelFormat::kYuyv: {
+          const std::uint8_t* pair = row + 4 * static_cast<std::size_t>(x / 2);
+          p = {row[2 * static_cast<std::size_t>(x)], pair[1], (x | 1) < frame.width ? pair[3] : std::uint8_t{128}};
+          break;
+        }
+        case hal::PixelFormat::kBgr8: {
+          const std::uint8_t* q = row + 3 * static_cast<std::size_t>(x);
+          p = bgr_to_yuv(q[0], q[1], q[2]);
+          break;
+        }
+        case hal::PixelFormat::kGray8: p = {row[x], 128, 128}; break;
+      }
+      const std::size_t b = static_cast<std::size_t>(p.u >> (8 - kHistBits)) << kHistBits | (p.v >> (8 - kHistBits));
+      ++chroma_hist_[b];
+      sum_u_[b] += p.u;
+      sum_v_[b] += p.v;
+      samples_[static_cast<std::size_t>(n++)] = {p, static_cast<std::uint8_t>(cell_row + x * kColourCellsX / frame.width)};
+    }
+  }
+  e.samples = n;
+  if (n < std::max(params.min_samples, 1)) return e;
 
   // The peak of the 3 × 3-smoothed histogram (a cluster straddling bin borders still wins).
   long best = -1;
   int best_u = 0, best_v = 0;
+  const auto bin = [&](int u, int v) -> long {
+    return u >= 0 && u < kHistBins && v >= 0 && v < kHistBins ? chroma_hist_[static_cast<std::size_t>(u * kHistBins + v)] : 0;
+  };
   for (int bu = 0; bu < kHistBins; ++bu) {
     for (int bv = 0; bv < kHistBins; ++bv) {
+      if (chroma_hist_[static_cast<std::size_t>(bu * kHistBins + bv)] == 0) continue;
       long s = 0;
       for (int du = -1; du <= 1; ++du)
-        for (int dv = -1; dv <= 1; ++dv) {
-          const int u = bu + du, v = bv + dv;
-          if (u >= 0 && u < kHistBins && v >= 0 && v < kHistBins) s += hist[static_cast<std::size_t>(u * kHistBins + v)];
-        }
+        for (int dv = -1; dv <= 1; ++dv) s += bin(bu + du, bv + dv);
       if (s > best) {
         best = s;
         best_u = bu;
@@ -99,32 +115,32 @@ FieldColourEstimate FieldColourEstimator::measure(const hal::FrameView& frame, s
       }
     }
   }
-  std::uint64_t su = 0, sv = 0, n = 0;
+  std::uint64_t su = 0, sv = 0, m = 0;
   for (int du = -1; du <= 1; ++du)
     for (int dv = -1; dv <= 1; ++dv) {
       const int u = best_u + du, v = best_v + dv;
       if (u < 0 || u >= kHistBins || v < 0 || v >= kHistBins) continue;
       const auto b = static_cast<std::size_t>(u * kHistBins + v);
-      su += sum_u[b];
-      sv += sum_v[b];
-      n += hist[b];
+      su += sum_u_[b];
+      sv += sum_v_[b];
+      m += chroma_hist_[b];
     }
-  if (n == 0) return e;
-  const int cu = static_cast<int>((su + n / 2) / n);
-  const int cv = static_cast<int>((sv + n / 2) / n);
+  if (m == 0) return e;
+  const int cu = static_cast<int>((su + m / 2) / m);
+  const int cv = static_cast<int>((sv + m / 2) / m);
 
-  // Pass 2: the cluster's members (chroma within cluster_radius of the centre): Y, U, V histograms.
+  // The cluster's members (chroma within cluster_radius of the centre): Y, U, V medians, spreads.
   const int r = std::max(params.cluster_radius, 1);
   std::array<std::uint16_t, 256> hy{}, hu{}, hv{};
   int members = 0;
-  for_each_sample(frame, first_row, stride, [&](int, int, const Yuv& p) {
-    if (std::abs(p.u - cu) > r || std::abs(p.v - cv) > r) return;
+  for (int i = 0; i < n; ++i) {
+    const Yuv& p = samples_[static_cast<std::size_t>(i)].yuv;
+    if (std::abs(p.u - cu) > r || std::abs(p.v - cv) > r) continue;
     ++hy[p.y];
     ++hu[p.u];
     ++hv[p.v];
     ++members;
-  });
-  e.field_samples = members;
+  }
   if (members == 0) return e;
   const int y25 = percentile(hy, members, 1, 4), y50 = percentile(hy, members, 1, 2), y75 = percentile(hy, members, 3, 4);
   const int u25 = percentile(hu, members, 1, 4), u50 = percentile(hu, members, 1, 2), u75 = percentile(hu, members, 3, 4);
@@ -134,25 +150,28 @@ FieldColourEstimate FieldColourEstimator::measure(const hal::FrameView& frame, s
   e.v = clamp_byte(v50);
   e.y_spread = clamp_byte((y75 - y25 + 1) / 2);
   e.uv_spread = clamp_byte((std::max(u75 - u25, v75 - v25) + 1) / 2);
-  const double fraction = static_cast<double>(members) / static_cast<double>(samples);
   const bool green = e.u <= params.field_max_u && e.v <= params.field_max_v &&
                      (128 - e.u) + (128 - e.v) >= params.field_min_chroma;
-  if (fraction < params.min_field_fraction || !green) return e;
 
-  // Pass 3: the local field luminance per image cell (members in the field's luminance band only,
-  // so lines and shadows do not pull it).
-  const int lo = e.y - std::max(params.field_y_below, 1);
-  const int hi = e.y + std::max(params.line_margin, 1);
-  std::array<std::uint32_t, kColourCells> cell_sum{}, cell_n{};
-  for_each_sample(frame, first_row, stride, [&](int x, int y, const Yuv& p) {
-    if (std::abs(p.u - cu) > r || std::abs(p.v - cv) > r || p.y < lo || p.y >= hi) return;
-    const auto c = static_cast<std::size_t>((y * kColourCellsY / frame.height) * kColourCellsX + x * kColourCellsX / frame.width);
-    cell_sum[c] += p.y;
-    ++cell_n[c];
-  });
+  // Every sample of field chroma (the classifier's rule: shaded and sunlit carpet too) counts as
+  // field: its share is the confidence, and per cell its median Y is the local field luminance.
+  const FieldChromaRule rule(e, params);
+  for (auto& h : cell_hist_) h.fill(0);
+  std::array<int, kColourCells> cell_n{};
+  int field = 0;
+  for (int i = 0; i < n; ++i) {
+    const Sample& s = samples_[static_cast<std::size_t>(i)];
+    if (!rule.field(s.yuv.u, s.yuv.v)) continue;
+    ++field;
+    ++cell_hist_[s.cell][s.yuv.y >> 2];
+    ++cell_n[s.cell];
+  }
+  e.field_samples = field;
+  const double fraction = static_cast<double>(field) / static_cast<double>(n);
+  if (fraction < params.min_field_fraction || !green) return e;
   for (std::size_t c = 0; c < e.cell_y.size(); ++c) {
-    e.cell_y[c] = cell_n[c] >= static_cast<std::uint32_t>(std::max(params.min_cell_samples, 1))
-                      ? clamp_byte(static_cast<long>((cell_sum[c] + cell_n[c] / 2) / cell_n[c]))
+    e.cell_y[c] = cell_n[c] >= std::max(params.min_cell_samples, 1)
+                      ? clamp_byte(percentile(cell_hist_[c], cell_n[c], 1, 2) * 4 + 2)
                       : e.y;
   }
   e.valid = true;
@@ -162,7 +181,7 @@ FieldColourEstimate FieldColourEstimator::measure(const hal::FrameView& frame, s
 }
 
 const FieldColourEstimate& FieldColourEstimator::update(const hal::FrameView& frame, std::span<const int> first_row) noexcept {
-  const FieldColourEstimate m = measure(frame, first_row, params_);
+  const FieldColourEstimate m = measure_frame(frame, first_row);
   FieldColourEstimate& s = smoothed_;
   if (!m.valid) {
     if (s.valid && s.age < params_.hold_frames) {
@@ -205,14 +224,7 @@ void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int heig
   const AdaptiveColourParams& p = params_;
   width_ = std::max(width, 1);
   height_ = std::max(height, 1);
-  const int tol = std::clamp(static_cast<int>(std::lround(p.chroma_tolerance_k * e.uv_spread)), p.chroma_tolerance_min,
-                             std::max(p.chroma_tolerance_min, p.chroma_tolerance_max));
-  const int field_distance = std::max(std::abs(e.u - 128), std::abs(e.v - 128));
-  const int neutral = std::max(p.line_max_chroma, static_cast<int>(std::lround(p.line_chroma_ratio * field_distance)));
-  field_u_ = e.u;
-  field_v_ = e.v;
-  tolerance_ = tol;
-  neutral_ = neutral;
+  rule_ = FieldChromaRule(e, p);
   constexpr int kBins = 1 << kChromaBits;
   constexpr int kShift = 8 - kChromaBits;
   for (int bu = 0; bu < kBins; ++bu) {
@@ -220,8 +232,8 @@ void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int heig
       const int u = (bu << kShift) + (1 << kShift) / 2;
       const int v = (bv << kShift) + (1 << kShift) / 2;
       std::uint8_t bits = 0;
-      if (std::abs(u - e.u) <= tol && std::abs(v - e.v) <= tol) bits |= kFieldBit;
-      if (std::abs(u - 128) <= neutral && std::abs(v - 128) <= neutral) bits |= kLineBit;
+      if (rule_.field(u, v)) bits |= kFieldBit;
+      if (rule_.unsaturated(u, v)) bits |= kLineBit;
       if (u >= p.ball.u_min && u <= p.ball.u_max && v >= p.ball.v_min && v <= p.ball.v_max) bits |= kBallBit;
       chroma_[static_cast<std::size_t>(bu * kBins + bv)] = bits;
     }
@@ -238,7 +250,7 @@ void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int heig
     std::uint8_t* luma = luma_.data() + cell_offset(c);
     for (int y = 0; y < 256; ++y) {
       std::uint8_t bits = 0;
-      if (y >= field_lo && y < line_y) bits |= kFieldBit;
+      if (y >= field_lo) bits |= kFieldBit;  // brighter than a line but saturated: sunlit carpet
       if (y >= line_y) bits |= kLineBit;
       if (y >= p.ball.y_min && y <= p.ball.y_max) bits |= kBallBit;
       luma[y] = bits;
