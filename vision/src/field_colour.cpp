@@ -102,9 +102,17 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
   const auto bin = [&](int u, int v) -> long {
     return u >= 0 && u < kHistBins && v >= 0 && v < kHistBins ? chroma_hist_[static_cast<std::size_t>(u * kHistBins + v)] : 0;
   };
+  // Only green-ish bins can be the field's peak (with a bin's slack): a grey floor or wall around
+  // the field may cover more of the view than the carpet does.
+  constexpr int kBinWidth = 1 << (8 - kHistBits);
+  const auto green_bin = [&](int bu, int bv) {
+    const int u = bu * kBinWidth + kBinWidth / 2, v = bv * kBinWidth + kBinWidth / 2;
+    return u <= params.field_max_u + kBinWidth / 2 && v <= params.field_max_v + kBinWidth / 2 &&
+           (128 - u) + (128 - v) >= params.field_min_chroma;
+  };
   for (int bu = 0; bu < kHistBins; ++bu) {
     for (int bv = 0; bv < kHistBins; ++bv) {
-      if (chroma_hist_[static_cast<std::size_t>(bu * kHistBins + bv)] == 0) continue;
+      if (chroma_hist_[static_cast<std::size_t>(bu * kHistBins + bv)] == 0 || !green_bin(bu, bv)) continue;
       long s = 0;
       for (int du = -1; du <= 1; ++du)
         for (int dv = -1; dv <= 1; ++dv) s += bin(bu + du, bv + dv);
@@ -170,9 +178,9 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
   const double fraction = static_cast<double>(field) / static_cast<double>(n);
   if (fraction < params.min_field_fraction || !green) return e;
   for (std::size_t c = 0; c < e.cell_y.size(); ++c) {
-    e.cell_y[c] = cell_n[c] >= std::max(params.min_cell_samples, 1)
-                      ? clamp_byte(percentile(cell_hist_[c], cell_n[c], 1, 2) * 4 + 2)
-                      : e.y;
+    const bool field_here = cell_n[c] >= std::max(params.min_cell_samples, 1);
+    e.cell_y[c] = field_here ? clamp_byte(percentile(cell_hist_[c], cell_n[c], 1, 2) * 4 + 2) : e.y;
+    if (field_here) e.field_cells |= std::uint64_t{1} << c;
   }
   e.valid = true;
   e.source = ColourSource::kFrame;
@@ -211,6 +219,7 @@ const FieldColourEstimate& FieldColourEstimator::update(const hal::FrameView& fr
   s.y_spread = blend(s.y_spread, m.y_spread, w);
   s.uv_spread = blend(s.uv_spread, m.uv_spread, w);
   for (std::size_t c = 0; c < s.cell_y.size(); ++c) s.cell_y[c] = blend(s.cell_y[c], m.cell_y[c], w);
+  s.field_cells = m.field_cells;
   s.source = ColourSource::kFrame;
   s.confidence = m.confidence;
   s.samples = m.samples;
@@ -243,7 +252,9 @@ void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int heig
     const int fy = e.cell_y[static_cast<std::size_t>(c)];
     const int margin = std::max({p.line_margin, static_cast<int>(std::lround(p.line_margin_k * spread_y)),
                                  static_cast<int>(std::lround(p.line_margin_ratio * fy))});
-    const int line_y = fy + margin;  // may exceed 255: no line in that cell
+    // Lines only where there is field (a grey floor or wall beyond the carpet is bright and
+    // unsaturated too); may exceed 255: no line in that cell.
+    const int line_y = ((e.field_cells >> c) & 1U) != 0 ? fy + margin : 256;
     const int field_lo = fy - std::max(p.field_y_below, static_cast<int>(std::lround(p.field_y_k * spread_y)));
     line_y_[static_cast<std::size_t>(c)] = line_y;
     field_lo_[static_cast<std::size_t>(c)] = field_lo;

@@ -4,7 +4,7 @@
 //
 // Estimate (FieldColourEstimator::update, every frame, fixed buffers, bounded cost): a sparse grid
 // of pixels below the horizon (every `sample_stride` px) fills a coarse 2-D chroma histogram
-// (32 × 32 bins of 8 codes); the fullest bin's neighbourhood is the field's chroma cluster. Its
+// (32 × 32 bins of 8 codes); the fullest green-ish bin's neighbourhood is the field's chroma cluster. Its
 // members give the field's U, V and Y medians and spreads; the samples of field chroma (the
 // classifier's rule) give per image cell (an 8 × 8 grid) the local field luminance (median). A cluster holding fewer than `min_field_fraction` of the samples, or
 // whose chroma is not green-ish, is no field (a wall, the sky, a robot filling the view): the
@@ -53,7 +53,7 @@ struct AdaptiveColourParams {
   int reset_jump_y = 24;              // a change of field Y (or U/V) larger than this resets the
   int reset_jump_uv = 10;             // smoothed estimate to this frame's
   int hold_frames = 30;               // frames a previous estimate is used when none is found
-  int min_cell_samples = 8;           // field samples a cell needs for its own luminance
+  int min_cell_samples = 8;           // field samples a cell needs for its own luminance (and for lines)
   // Classification (relative to the estimate).
   // Field chroma: within a box of ±tolerance around the field's (U, V), where tolerance =
   // clamp(k·spread, min, max), or in the cone from neutral through it: projection t onto the
@@ -110,6 +110,7 @@ struct FieldColourEstimate {
   int age = 0;                 // frames since the estimate was last measured (0: this frame)
   bool reset = false;          // this frame's estimate jumped: smoothing restarted
   std::array<std::uint8_t, kColourCells> cell_y{};  // local field Y per image cell (row-major)
+  std::uint64_t field_cells = 0;  // bit c: cell c holds field (min_cell_samples); lines only near field
 };
 
 class FieldColourEstimator {
