@@ -57,6 +57,67 @@ void BM_ClassifyBgr(benchmark::State& state) {
 }
 BENCHMARK(BM_ClassifyBgr)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
+// Adaptive colour: the per-frame estimate (sampling below the horizon), the tables it builds, and
+// classification with them, against the same rule as plain comparisons per pixel.
+void BM_FieldColourEstimate(benchmark::State& state) {
+  const Fixture& f = fixture();
+  FieldColourEstimator estimator;
+  const hal::FrameView& view = state.range(0) != 0 ? f.bgr.view : f.yuyv.view;
+  for (auto _ : state) benchmark::DoNotOptimize(estimator.update(view, f.rows).y);
+  state.SetLabel(state.range(0) != 0 ? "BGR" : "YUYV");
+}
+BENCHMARK(BM_FieldColourEstimate)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+void BM_AdaptiveBuild(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const FieldColourEstimate e = FieldColourEstimator::measure(f.yuyv.view, f.rows, {});
+  AdaptiveClassifier adaptive;
+  for (auto _ : state) {
+    adaptive.build(e, 640, 480);
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_AdaptiveBuild)->Unit(benchmark::kMicrosecond);
+
+void BM_ClassifyAdaptive(benchmark::State& state) {
+  const Fixture& f = fixture();
+  AdaptiveClassifier adaptive;
+  adaptive.build(FieldColourEstimator::measure(f.yuyv.view, f.rows, {}), 640, 480);
+  ClassImage classes(640, 480);
+  const int step = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(classes.classify(f.yuyv.view, adaptive, f.first, step));
+    benchmark::ClobberMemory();
+  }
+  state.SetLabel("tables, YUYV below horizon");
+}
+BENCHMARK(BM_ClassifyAdaptive)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+
+// The alternative that was measured and not kept: the rule's comparisons for every pixel.
+void BM_ClassifyAdaptiveByComparison(benchmark::State& state) {
+  const Fixture& f = fixture();
+  AdaptiveClassifier adaptive;
+  adaptive.build(FieldColourEstimator::measure(f.yuyv.view, f.rows, {}), 640, 480);
+  std::vector<std::uint8_t> out(640 * 480);
+  for (auto _ : state) {
+    for (int y = f.first; y < 480; ++y) {
+      const std::uint8_t* in = f.yuyv.view.data + static_cast<std::size_t>(y) * 1280U;
+      std::uint8_t* o = out.data() + static_cast<std::size_t>(y) * 640U;
+      const int cell_row = (y * kColourCellsY / 480) * kColourCellsX;
+      for (int x = 0; x < 640; x += 2) {
+        const std::uint8_t* p = in + 2 * x;
+        const int cell = cell_row + x * kColourCellsX / 640;
+        o[x] = static_cast<std::uint8_t>(adaptive.classify_by_comparison(p[0], p[1], p[3], cell));
+        o[x + 1] = static_cast<std::uint8_t>(adaptive.classify_by_comparison(p[2], p[1], p[3], cell));
+      }
+    }
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetLabel("comparisons, YUYV below horizon");
+}
+BENCHMARK(BM_ClassifyAdaptiveByComparison)->Unit(benchmark::kMicrosecond);
+
 void BM_ScanPoints(benchmark::State& state) {
   const Fixture& f = fixture();
   ClassImage classes(640, 480);
@@ -138,7 +199,9 @@ BENCHMARK(BM_PipelineHog)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond)
 
 void BM_Pipeline(benchmark::State& state) {
   const Fixture& f = fixture();
-  VisionPipeline pipeline(VisionConfig{}, f.table);
+  VisionConfig config;
+  config.colour_mode = state.range(1) != 0 ? ColourMode::kTable : ColourMode::kAdaptive;
+  VisionPipeline pipeline(config, f.table);
   const int level = static_cast<int>(state.range(0));
   hal::FrameView view = f.yuyv.view;
   for (auto _ : state) {
@@ -146,13 +209,14 @@ void BM_Pipeline(benchmark::State& state) {
     benchmark::DoNotOptimize(pipeline.process(view, f.cam.head, {}, level).line_count);
   }
   state.counters["lines"] = static_cast<double>(pipeline.result().line_count);
+  state.SetLabel(to_string(config.colour_mode));
   // The cost model (cost_model.hpp) against this host: model_host_us is the modelled cost without
   // the board factor, to set beside the measured time per frame; a drift of the model shows here.
   const CostModel model = default_cost_model();
   state.counters["model_host_us"] =
       static_cast<double>(modelled_cost(pipeline.result().work, model).count()) / model.board_slowdown / 1000.0;
 }
-BENCHMARK(BM_Pipeline)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Pipeline)->Args({0, 0})->Args({1, 0})->Args({2, 0})->Args({0, 1})->Args({1, 1})->Args({2, 1})->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

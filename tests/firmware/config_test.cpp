@@ -48,6 +48,7 @@ TEST(FirmwareConfig, SplConfigHasTheCameraAndAVisionTask) {
   EXPECT_EQ(cfg.camera.intrinsics.width, 640);
   EXPECT_EQ(cfg.vision.max_trials, 30);
   EXPECT_EQ(cfg.vision.skip, 10);
+  EXPECT_EQ(cfg.vision.colour, "adaptive") << "no lut: the field colour is estimated per frame";
   const auto vision = std::find_if(cfg.tasks.begin(), cfg.tasks.end(), [](const auto& t) { return t.name == "vision"; });
   ASSERT_NE(vision, cfg.tasks.end());
   EXPECT_EQ(vision->every, 3);
@@ -117,6 +118,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "camera.source: the \"opencv\" camera needs a source"},
         BadCase{"[telemetry]", "[camera]\nformat = \"rgb565\"\n[telemetry]", "camera.format: must be one of \"yuyv\", \"bgr\""},
         BadCase{"[telemetry]", "[vision]\nskip = 0\n[telemetry]", "vision.skip: must be between 1 and 1000"},
+        BadCase{"[telemetry]", "[vision]\ncolour = \"lut\"\n[telemetry]",
+                "vision.colour: must be one of \"adaptive\", \"table\", got \"lut\""},
         BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 1.9 },",
                 "executive.tasks[0].budget_us: must be a whole number of microseconds, got 1.9"},
         BadCase{"timeout_s", "timeout_s = 1e6", "mission.timeout_s: must be between 0.01 and 86400, got 1e+06"},

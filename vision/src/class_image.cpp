@@ -80,4 +80,60 @@ bool ClassImage::classify(const hal::FrameView& frame, const ColourTable& table,
   return true;
 }
 
+bool ClassImage::classify(const hal::FrameView& frame, const AdaptiveClassifier& adaptive, int first_row, int step) noexcept {
+  if (frame.width != width_ || frame.height != height_ || frame.data == nullptr) return false;
+  if (adaptive.width() != width_ || adaptive.height() != height_) return false;
+  step_ = step == 2 ? 2 : 1;
+  first_row_ = std::clamp(first_row, 0, height_);
+  const std::uint8_t* chroma = adaptive.chroma_table();
+  const std::uint8_t* combine = adaptive.combine_table();
+  const auto s = static_cast<std::size_t>(step_);
+  const auto w = static_cast<std::size_t>(width_);
+  for (int y = first_row_; y < height_; y += step_) {
+    const std::uint8_t* in = frame.data + static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.stride);
+    std::uint8_t* out = data_.data() + static_cast<std::size_t>(y) * w;
+    const int cell_row = (y * kColourCellsY / height_) * kColourCellsX;
+    // Column segments of one cell each: x*cells/width == cx  <=>  x in [ceil(cx*w/cells), ceil((cx+1)*w/cells)).
+    for (int cx = 0; cx < kColourCellsX; ++cx) {
+      const std::uint8_t* luma = adaptive.luma_table(cell_row + cx);
+      std::size_t xs = (static_cast<std::size_t>(cx) * w + kColourCellsX - 1) / kColourCellsX;
+      const std::size_t xe = (static_cast<std::size_t>(cx + 1) * w + kColourCellsX - 1) / kColourCellsX;
+      xs = (xs + s - 1) / s * s;  // the first sampled column of the segment
+      switch (frame.format) {
+        case hal::PixelFormat::kYuyv:
+          if (step_ == 1 && (xs & 1U) == 0 && (xe & 1U) == 0) {
+            // Whole pixel pairs: the chroma bits once per pair.
+            for (std::size_t x = xs; x < xe; x += 2) {
+              const std::uint8_t* p = in + 2 * x;  // Y0 U Y1 V
+              const unsigned c = static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(p[1], p[3])]) << 3;
+              out[x] = combine[c | luma[p[0]]];
+              out[x + 1] = combine[c | luma[p[2]]];
+            }
+          } else {
+            for (std::size_t x = xs; x < xe; x += s) {
+              const std::uint8_t* pair = in + 4 * (x / 2);
+              const std::uint8_t v = (x | 1U) < w ? pair[3] : std::uint8_t{128};
+              const unsigned c = static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(pair[1], v)]) << 3;
+              out[x] = combine[c | luma[in[2 * x]]];
+            }
+          }
+          break;
+        case hal::PixelFormat::kBgr8:
+          for (std::size_t x = xs; x < xe; x += s) {
+            const std::uint8_t* p = in + 3 * x;
+            const Yuv q = bgr_to_yuv(p[0], p[1], p[2]);
+            out[x] = combine[static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(q.u, q.v)]) << 3 | luma[q.y]];
+          }
+          break;
+        case hal::PixelFormat::kGray8:
+          for (std::size_t x = xs; x < xe; x += s) {
+            out[x] = combine[static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(128, 128)]) << 3 | luma[in[x]]];
+          }
+          break;
+      }
+    }
+  }
+  return true;
+}
+
 }  // namespace ringlet::vision

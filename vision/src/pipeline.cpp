@@ -10,6 +10,8 @@ namespace ringlet::vision {
 VisionPipeline::VisionPipeline(const VisionConfig& config, ColourTable table)
     : config_(config),
       table_(std::move(table)),
+      field_colour_(config.adaptive),
+      adaptive_(config.adaptive),
       classes_(config.intrinsics.width, config.intrinsics.height),
       first_row_(static_cast<std::size_t>(std::max(config.intrinsics.width, 0)), 0),
       scanner_(config.intrinsics.width),
@@ -70,7 +72,14 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
       static_cast<std::int64_t>(k.width) * std::max<std::int64_t>(0, k.height - r.horizon_row);
   bool classified = false;
   if (may_run(Stage::kClassify)) {
-    classified = classes_.classify(frame, table_, r.horizon_row, level.class_step);
+    // Adaptive: the field colour from this frame's samples below the horizon (smoothed over frames),
+    // then the small per-frame tables; the static table when no field colour is known.
+    if (config_.colour_mode == ColourMode::kAdaptive) {
+      r.field_colour = field_colour_.update(frame, first_row_);
+      if (r.field_colour.valid) adaptive_.build(r.field_colour, k.width, k.height);
+    }
+    classified = r.field_colour.valid ? classes_.classify(frame, adaptive_, r.horizon_row, level.class_step)
+                                      : classes_.classify(frame, table_, r.horizon_row, level.class_step);
     if (classified) r.work.classified_pixels = ground_pixels / (level.class_step * level.class_step);
     lap(Stage::kClassify);
   }

@@ -207,6 +207,7 @@ void read_vision(Section& vision, VisionSettings& v, const std::filesystem::path
   v.seed = vision.unsigned_integer("seed", v.seed);
   v.max_trials = vision.integer("max_trials", v.max_trials, 1, 10000);
   v.skip = vision.integer("skip", v.skip, 1, 1000);
+  v.colour = vision.text("colour", v.lut.empty() ? "adaptive" : "table", {"adaptive", "table"});
   vision.reject_unknown();
 }
 

@@ -53,9 +53,11 @@ void sample_labelled_image(const LabelledImage& image, int stride, std::vector<L
     // Shift the start each sampled row so both pixels of a pair are sampled over the image.
     for (int x = (y / stride) % stride; x < width; x += stride) {
       const std::uint8_t c = label[x];
+      if (c == kIgnoreLabel) continue;  // not labelled: neither trains nor scores
       if (c >= kColourClassCount) {
         throw ToolError(image.labels.string() + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                        ") has label " + std::to_string(c) + ", not a colour class (0 other, 1 field, 2 line, 3 ball)");
+                        ") has label " + std::to_string(c) +
+                        ", not a colour class (0 other, 1 field, 2 line, 3 ball) or 255 (not labelled)");
       }
       const auto pair = static_cast<std::size_t>(x / 2) * 4U;
       const std::uint8_t luma = yuyv[pair + (x % 2 == 0 ? 0U : 2U)];

@@ -1,9 +1,10 @@
 #pragma once
 // Labelled example images: a picture and, next to it, NAME_labels.png, one byte per pixel holding
 // the ColourClass of that pixel (0 other, 1 field, 2 line, 3 ball), as ringlet-dataset writes them
-// (or as a person paints them). Samples are taken as the robot's camera would give them: the
+// (or as a person paints them); 255 means "not labelled" (ignored: partial labels are fine). Samples are taken as the robot's camera would give them: the
 // picture goes through hal::bgr_to_yuyv, so a pixel pair shares its chroma.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <vector>
@@ -11,6 +12,9 @@
 #include "ringlet/vision/colour_table.hpp"
 
 namespace ringlet::vision::tools {
+
+/// The label value of a pixel nobody labelled: it neither trains a table nor is scored.
+inline constexpr std::uint8_t kIgnoreLabel = 255;
 
 struct LabelledImage {
   std::filesystem::path picture;

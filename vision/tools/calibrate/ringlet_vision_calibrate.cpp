@@ -16,6 +16,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "auto_calibration.hpp"
 #include "labelled_set.hpp"
 #include "vision_io.hpp"
 
@@ -40,6 +41,11 @@ struct Options {
   std::string fill = "nearest";
   int max_fill_distance = ExampleTrainingOptions{}.max_fill_distance;
   bool quiet = false;
+  bool auto_mode = false;
+  std::vector<std::string> photos;
+  std::string report;
+  std::string classes_dir;
+  tools::CameraOptions camera;
 };
 
 std::uint8_t* bound_field(YuvRange& r, std::size_t i) {
@@ -112,12 +118,41 @@ int run(const Options& o) {
     throw tools::ToolError("--lut evaluates an existing table; it does not go with --examples or --thresholds");
   }
   if (!o.examples.empty() && o.thresholds) throw tools::ToolError("--examples and --thresholds: choose one");
+  if (o.auto_mode && (!o.examples.empty() || o.thresholds || !o.lut.empty())) {
+    throw tools::ToolError("--auto builds the table from photos; it does not go with --examples, --thresholds or --lut");
+  }
+  if (!o.auto_mode && !o.photos.empty()) {
+    throw tools::ToolError("photos given without --auto: " + o.photos.front() + " (--auto PHOTO... builds a table from them)");
+  }
+  if (!o.auto_mode && (!o.report.empty() || !o.classes_dir.empty())) {
+    throw tools::ToolError("--report and --classes-dir go with --auto");
+  }
 
   std::string source;
   ColourTable table;
   if (!o.lut.empty()) {
     table = tools::load_table(o.lut);
     source = o.lut;
+  } else if (o.auto_mode) {
+    tools::AutoOptions options;
+    options.camera = o.camera;
+    options.stride = o.stride;
+    options.bin_bits = o.bin_bits;
+    options.training.fill = o.fill == "other" ? EmptyBinFill::kOther : EmptyBinFill::kNearest;
+    options.training.max_fill_distance = o.max_fill_distance;
+    options.classes_dir = o.classes_dir;
+    tools::AutoCalibration calibration = tools::auto_calibrate(o.photos, options);
+    for (const auto& photo : calibration.photos) std::cout << tools::describe(photo) << "\n";
+    if (!o.report.empty()) {
+      std::ofstream file(o.report);
+      file << tools::report_json(calibration).dump(2) << "\n";
+      if (!file) {
+        std::cerr << "ringlet-vision-calibrate: " << o.report << ": cannot write the report\n";
+        return 1;
+      }
+    }
+    table = std::move(calibration.table);
+    source = "auto from " + std::to_string(o.photos.size()) + " photos";
   } else if (!o.examples.empty()) {
     const auto images = tools::find_labelled_images(o.examples);
     const auto samples = tools::sample_labelled_set(images, o.stride, progress_printer(o, "sampling"));
@@ -182,6 +217,12 @@ int main(int argc, char** argv) {
           ->group("Thresholds (full-range YUV; ball, then line, then field wins)");
     }
   }
+  app.add_flag("--auto", o.auto_mode, "build from unlabelled photos (PHOTO... after the flags): the field colour is "
+                                      "estimated in each, pixels classified relative to it, and the table trained on them");
+  app.add_option("photos", o.photos, "photos (PNG or JPEG) for --auto, taken at the head pose given by --pitch/--yaw");
+  app.add_option("--report", o.report, "--auto: write the per-photo field estimate and class fractions as JSON here");
+  app.add_option("--classes-dir", o.classes_dir, "--auto: write NAME_classes.png (the classes over each photo) here");
+  o.camera.add_to(app);
   app.add_option("--examples", o.examples, "build from labelled examples: a folder of *_labels.png with their pictures")
       ->check(CLI::ExistingDirectory);
   app.add_option("--stride", o.stride, "sample every N-th pixel in both directions (examples and --evaluate)")

@@ -22,6 +22,7 @@
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/vision/pipeline.hpp"
+#include "class_drawing.hpp"
 #include "vision_io.hpp"
 
 namespace {
@@ -33,6 +34,7 @@ struct Options {
   std::string image;
   std::string lut;
   std::string overlay;
+  std::string classes;
   tools::CameraOptions camera;
   std::uint64_t seed = RansacParams{}.seed;
   int max_trials = RansacParams{}.max_trials;
@@ -50,6 +52,7 @@ int run(const Options& o) {
   config.ransac.skip = o.skip;
   // Both are checked before anything runs, so a bad table or image never gives partial output.
   ColourTable table = tools::load_table(o.lut);
+  if (!o.lut.empty()) config.colour_mode = ColourMode::kTable;  // a calibrated table is used as it is
   const tools::LoadedImage image = tools::load_frame(o.image, config.intrinsics.width, config.intrinsics.height);
   for (const std::string& w : image.warnings) std::cerr << "ringlet-vision: warning: " << o.image << ": " << w << "\n";
   const cv::Mat& bgr = image.bgr;
@@ -98,6 +101,7 @@ int run(const Options& o) {
   }
   std::cout << out.dump(o.compact ? -1 : 2) << "\n";
 
+  if (!o.classes.empty() && !tools::write_class_image(o.classes, bgr, pipeline.classes(), "ringlet-vision")) return 1;
   if (!o.overlay.empty()) {
     cv::Mat drawn = bgr.clone();
     tools::draw_result(drawn, result, config.intrinsics, hal::CameraPose::from_posture(config.mount, posture));
@@ -126,6 +130,8 @@ int main(int argc, char** argv) {
   app.add_option("--lut", o.lut, "colour table file (RLUT, from ringlet-vision-calibrate); default: the built-in "
                                  "default thresholds");
   app.add_option("--overlay", o.overlay, "also write the picture with the detections drawn over it (PNG or JPEG)");
+  app.add_option("--classes", o.classes, "also write the picture with the colour classes drawn over it (field "
+                                         "green, line white, ball orange, other dark; PNG or JPEG)");
   app.add_option("--seed", o.seed, "RANSAC seed (the frame's stream is derived from it)")->capture_default_str();
   app.add_option("--max-trials", o.max_trials, "RANSAC MAX_TRIALS: hypotheses per line")
       ->capture_default_str()->check(CLI::Range(1, 100000));

@@ -201,6 +201,10 @@ nlohmann::json result_json(const VisionResult& r) {
                      {"circle", {{"seen", r.circle.seen}}},
                      {"ball", {{"seen", r.ball.seen}}},
                      {"candidates", r.candidates},
+                     {"field_colour", {{"source", to_string(r.field_colour.source)}, {"valid", r.field_colour.valid},
+                                       {"y", r.field_colour.y}, {"u", r.field_colour.u}, {"v", r.field_colour.v},
+                                       {"y_spread", r.field_colour.y_spread}, {"uv_spread", r.field_colour.uv_spread},
+                                       {"confidence", r.field_colour.confidence}}},
                      {"horizon_row", r.horizon_row}};
   if (r.circle.seen) {
     out["circle"] = {{"seen", true},

@@ -18,6 +18,7 @@ std::unique_ptr<vision::VisionPipeline> make_vision(const FirmwareConfig& config
   v.ransac.max_trials = config.vision.max_trials;
   v.ransac.skip = config.vision.skip;
   v.ransac.seed = config.vision.seed;
+  v.colour_mode = config.vision.colour == "table" ? vision::ColourMode::kTable : vision::ColourMode::kAdaptive;
   return std::make_unique<vision::VisionPipeline>(v, std::move(table));
 }
 

@@ -10,6 +10,7 @@
 #include "ringlet/hal/camera.hpp"
 #include "ringlet/vision/colour.hpp"
 #include "ringlet/vision/colour_table.hpp"
+#include "ringlet/vision/field_colour.hpp"
 
 namespace ringlet::vision {
 
@@ -36,6 +37,9 @@ class ClassImage {
   /// and classifies nothing) every `step` (1 or 2) pixels in both directions. YUYV pairs share
   /// their U and V; BGR8 goes through bgr_to_yuv; Gray8 is taken as U = V = 128.
   bool classify(const hal::FrameView& frame, const ColourTable& table, int first_row, int step) noexcept;
+  /// The same with the adaptive classifier (built for this frame's size): per pixel one chroma
+  /// table load (per YUYV pair), one luminance table load for the pixel's cell and one combining load.
+  bool classify(const hal::FrameView& frame, const AdaptiveClassifier& adaptive, int first_row, int step) noexcept;
 
  private:
   int width_;

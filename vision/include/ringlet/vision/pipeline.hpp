@@ -20,6 +20,7 @@
 #include "ringlet/vision/colour_table.hpp"
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/deadline.hpp"
+#include "ringlet/vision/field_colour.hpp"
 #include "ringlet/vision/ransac.hpp"
 #include "ringlet/vision/robots.hpp"
 #include "ringlet/vision/scan_points.hpp"
@@ -53,6 +54,10 @@ struct VisionConfig {
   BwBallParams bw_ball{};
   bool robots = true;                    // the robot stage (verified only with a robot model installed)
   RobotParams robot{};
+  // Colour: adaptive (the field's colour estimated from each frame, the table as fallback when
+  // none is found) or the static table always (field_colour.hpp).
+  ColourMode colour_mode = ColourMode::kAdaptive;
+  AdaptiveColourParams adaptive{};
   // Level 0 = full (the RansacParams: Mi-Pal's 30 trials, skip 10); 1 = every other pixel
   // classified, scan lines twice as far apart, half the trials; 2 = least. The HOG classifiers go
   // first: fewer candidates classified at level 1, none at level 2.
@@ -95,6 +100,7 @@ struct VisionResult {
   BallDetection ball{};         // the best ball (balls.balls[0] when balls.count > 0)
   BallList balls{};             // black and white: up to kMaxBalls; orange: the one ball
   RobotList robots{};
+  FieldColourEstimate field_colour{};  // the field colour the frame was classified with (source kTable: the table)
   int candidates = 0;           // scan points found
   int candidates_dropped = 0;   // beyond max_candidates
   ScanStats scan{};
@@ -135,10 +141,13 @@ class VisionPipeline {
   [[nodiscard]] const CandidateBuffer& candidates() const noexcept { return candidates_; }
   [[nodiscard]] const VisionConfig& config() const noexcept { return config_; }
   [[nodiscard]] const ColourTable& table() const noexcept { return table_; }
+  [[nodiscard]] const AdaptiveClassifier& adaptive() const noexcept { return adaptive_; }
 
  private:
   VisionConfig config_;
   ColourTable table_;
+  FieldColourEstimator field_colour_;
+  AdaptiveClassifier adaptive_;
   ClassImage classes_;
   std::vector<int> first_row_;
   LineScanner scanner_;

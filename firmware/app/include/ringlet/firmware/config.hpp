@@ -75,6 +75,8 @@ struct VisionSettings {
   std::uint64_t seed = 1;     // RANSAC's sampling
   int max_trials = 30;        // Mi-Pal's MAX_TRIALS
   int skip = 10;              // Mi-Pal's RANSAC_SKIP
+  std::string colour;         // "adaptive" (field colour from each frame, the table as fallback) or "table";
+                              // default: "table" when lut is given, else "adaptive"
 };
 
 /// Where each key of the file was written, so that problems found after parsing (binding the

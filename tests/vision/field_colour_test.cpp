@@ -1,0 +1,309 @@
+// The adaptive colour classification on frames coloured like the real NAO photos of issue 10:
+// carpet V 112–128 (the default table's field stops at V 122), bluish-white lines with U 95–103
+// (the table's line starts at U 106), and a backlit frame with line Y 157–168 over a dim field
+// (the table's line starts at Y 165). The adaptive classifier must label carpet field and lines
+// line (pixel precision and recall ≥ 0.9) where the default table fails, follow exposure changes
+// from frame to frame, and fall back when there is no field in view.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "ringlet/vision/class_image.hpp"
+#include "ringlet/vision/field_colour.hpp"
+#include "ringlet/vision/horizon.hpp"
+#include "ringlet/vision/pipeline.hpp"
+#include "synthetic_field.hpp"
+
+namespace ringlet::vision {
+namespace {
+
+using testing::Camera;
+
+// YUV of each surface; Y and V may vary across the image (low frequency, as light and carpet do).
+struct Palette {
+  int field_y = 95, field_u = 110, field_v_left = 112, field_v_right = 128;
+  int line_y_lo = 190, line_y_hi = 210, line_u_lo = 95, line_u_hi = 103, line_v = 126;
+  int wall_y = 120, wall_u = 128, wall_v = 128;
+  int noise = 3;  // ± per channel
+};
+
+Palette real_carpet() { return {}; }
+Palette backlit() {
+  Palette p;
+  p.field_y = 58;
+  p.field_u = 114;
+  p.field_v_left = 116;
+  p.field_v_right = 122;
+  p.line_y_lo = 157;
+  p.line_y_hi = 168;
+  p.line_u_lo = 98;
+  p.line_u_hi = 104;
+  p.line_v = 128;
+  p.wall_y = 200;  // bright windows behind
+  return p;
+}
+
+struct Labelled {
+  testing::Frame frame;            // YUYV
+  std::vector<ColourClass> truth;  // per pixel
+};
+
+std::uint32_t mix(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
+  return x;
+}
+
+int jitter(int c, int noise, std::uint32_t h) {
+  return std::clamp(c + static_cast<int>(h % static_cast<std::uint32_t>(2 * noise + 1)) - noise, 0, 255);
+}
+
+// The synthetic field scene (lines, circle; no ball) rendered for its geometry, then each surface
+// given the palette's YUV; pixel pairs share their chroma as a YUYV camera's do. `gain` scales
+// every luminance (exposure).
+Labelled render(const Palette& pal, double gain = 1.0, std::uint64_t sequence = 0) {
+  Camera cam;
+  testing::Scene scene = testing::field_scene();
+  scene.ball.reset();
+  scene.noise = 0;
+  const testing::Frame geometry = testing::render(scene, cam, hal::PixelFormat::kBgr8);
+  Labelled out;
+  const int w = cam.k.width, h = cam.k.height;
+  out.truth.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  std::vector<Yuv> yuv(out.truth.size());
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
+      const std::uint8_t* p = geometry.bytes.data() + 3 * i;
+      const double t = static_cast<double>(x) / (w - 1);
+      const auto seed = static_cast<std::uint32_t>(i) * 3U + static_cast<std::uint32_t>(sequence) * 7919U;
+      int cy = 0, cu = 0, cv = 0;
+      ColourClass c = ColourClass::kOther;
+      if (p[1] == testing::kGreen.g && p[0] == testing::kGreen.b) {
+        c = ColourClass::kField;
+        cy = pal.field_y;
+        cu = pal.field_u;
+        cv = static_cast<int>(std::lround(pal.field_v_left + t * (pal.field_v_right - pal.field_v_left)));
+      } else if (p[0] == testing::kWhite.b) {
+        c = ColourClass::kLine;
+        cy = static_cast<int>(std::lround(pal.line_y_lo + t * (pal.line_y_hi - pal.line_y_lo)));
+        cu = static_cast<int>(std::lround(pal.line_u_lo + (1.0 - t) * (pal.line_u_hi - pal.line_u_lo)));
+        cv = pal.line_v;
+      } else {
+        cy = pal.wall_y;
+        cu = pal.wall_u;
+        cv = pal.wall_v;
+      }
+      cy = static_cast<int>(std::lround(cy * gain));
+      out.truth[i] = c;
+      yuv[i] = {static_cast<std::uint8_t>(jitter(cy, pal.noise, mix(seed))),
+                static_cast<std::uint8_t>(jitter(cu, pal.noise, mix(seed + 1))),
+                static_cast<std::uint8_t>(jitter(cv, pal.noise, mix(seed + 2)))};
+    }
+  }
+  testing::Frame& f = out.frame;
+  f.view.sequence = sequence;
+  f.view.format = hal::PixelFormat::kYuyv;
+  f.view.width = w;
+  f.view.height = h;
+  f.view.stride = 2 * w;
+  f.bytes.resize(static_cast<std::size_t>(f.view.stride) * static_cast<std::size_t>(h));
+  for (std::size_t i = 0; i + 1 < yuv.size(); i += 2) {
+    f.bytes[2 * i] = yuv[i].y;
+    f.bytes[2 * i + 1] = static_cast<std::uint8_t>((yuv[i].u + yuv[i + 1].u + 1) / 2);
+    f.bytes[2 * i + 2] = yuv[i + 1].y;
+    f.bytes[2 * i + 3] = static_cast<std::uint8_t>((yuv[i].v + yuv[i + 1].v + 1) / 2);
+  }
+  f.view.data = f.bytes.data();
+  return out;
+}
+
+struct Score {
+  double precision = 0.0, recall = 0.0;
+};
+
+// Pixel precision and recall of class c over the classified rows.
+Score score(const ClassImage& classes, const Labelled& l, ColourClass c) {
+  long tp = 0, predicted = 0, labelled = 0;
+  for (int y = classes.first_row(); y < classes.height(); ++y) {
+    for (int x = 0; x < classes.width(); ++x) {
+      const bool truth = l.truth[static_cast<std::size_t>(y) * static_cast<std::size_t>(classes.width()) +
+                                 static_cast<std::size_t>(x)] == c;
+      const bool said = classes.at(x, y) == c;
+      tp += truth && said;
+      predicted += said;
+      labelled += truth;
+    }
+  }
+  return {predicted == 0 ? 1.0 : static_cast<double>(tp) / static_cast<double>(predicted),
+          labelled == 0 ? 1.0 : static_cast<double>(tp) / static_cast<double>(labelled)};
+}
+
+struct Classified {
+  ClassImage adaptive{640, 480};
+  ClassImage table{640, 480};
+  FieldColourEstimate estimate;
+};
+
+Classified classify_both(const Labelled& l) {
+  Camera cam;
+  std::vector<int> rows(640);
+  const int first = horizon_rows(cam.k, cam.pose(), 2, rows);
+  Classified out;
+  out.estimate = FieldColourEstimator::measure(l.frame.view, rows, {});
+  EXPECT_TRUE(out.estimate.valid);
+  AdaptiveClassifier adaptive;
+  adaptive.build(out.estimate, 640, 480);
+  EXPECT_TRUE(out.adaptive.classify(l.frame.view, adaptive, first, 1));
+  EXPECT_TRUE(out.table.classify(l.frame.view, ColourTable::from_thresholds({}), first, 1));
+  return out;
+}
+
+TEST(FieldColour, RealCarpetColoursAdaptiveLabelsFieldAndLinesWhereTheDefaultTableFails) {
+  const Labelled l = render(real_carpet());
+  const Classified c = classify_both(l);
+  EXPECT_NEAR(c.estimate.y, 95, 3);
+  EXPECT_NEAR(c.estimate.u, 110, 3);
+  EXPECT_NEAR(c.estimate.v, 120, 4);
+  EXPECT_GT(c.estimate.confidence, 0.7);
+  const Score field = score(c.adaptive, l, ColourClass::kField);
+  const Score line = score(c.adaptive, l, ColourClass::kLine);
+  EXPECT_GE(field.precision, 0.9);
+  EXPECT_GE(field.recall, 0.9);
+  EXPECT_GE(line.precision, 0.9);
+  EXPECT_GE(line.recall, 0.9);
+  // The default table: carpet with V > 122 is not field, lines with U < 106 are not line.
+  const Score table_field = score(c.table, l, ColourClass::kField);
+  const Score table_line = score(c.table, l, ColourClass::kLine);
+  EXPECT_LT(table_field.recall, 0.8);
+  EXPECT_LT(table_line.recall, 0.5);
+  std::printf("real carpet: adaptive field P %.3f R %.3f, line P %.3f R %.3f; table field R %.3f, line R %.3f\n",
+              field.precision, field.recall, line.precision, line.recall, table_field.recall, table_line.recall);
+}
+
+TEST(FieldColour, BacklitFrameDimFieldAndGreyLines) {
+  const Labelled l = render(backlit());
+  const Classified c = classify_both(l);
+  EXPECT_NEAR(c.estimate.y, 58, 3);
+  const Score field = score(c.adaptive, l, ColourClass::kField);
+  const Score line = score(c.adaptive, l, ColourClass::kLine);
+  EXPECT_GE(field.precision, 0.9);
+  EXPECT_GE(field.recall, 0.9);
+  EXPECT_GE(line.precision, 0.9);
+  EXPECT_GE(line.recall, 0.9);
+  const Score table_line = score(c.table, l, ColourClass::kLine);
+  EXPECT_LT(table_line.recall, 0.5);
+  std::printf("backlit: adaptive field P %.3f R %.3f, line P %.3f R %.3f; table line R %.3f\n", field.precision,
+              field.recall, line.precision, line.recall, table_line.recall);
+}
+
+TEST(FieldColour, TablesAgreeWithTheComparisonRule) {
+  const Labelled l = render(real_carpet());
+  Camera cam;
+  std::vector<int> rows(640);
+  horizon_rows(cam.k, cam.pose(), 2, rows);
+  AdaptiveClassifier adaptive;
+  adaptive.build(FieldColourEstimator::measure(l.frame.view, rows, {}), 640, 480);
+  int differ = 0, compared = 0;
+  for (int y = 0; y < 256; y += 3)
+    for (int u = 0; u < 256; u += 4)  // bin-aligned chroma: the tables test the bin centre
+      for (int v = 0; v < 256; v += 4) {
+        const auto uu = static_cast<std::uint8_t>(u + 2), vv = static_cast<std::uint8_t>(v + 2);
+        for (const int cell : {0, 9, 15}) {
+          ++compared;
+          differ += adaptive.classify(static_cast<std::uint8_t>(y), uu, vv, cell) !=
+                    adaptive.classify_by_comparison(static_cast<std::uint8_t>(y), uu, vv, cell);
+        }
+      }
+  EXPECT_GT(compared, 100000);
+  EXPECT_EQ(differ, 0);
+}
+
+TEST(FieldColour, ExposureChangesAreFollowedFrameToFrame) {
+  Camera cam;
+  VisionPipeline pipeline(VisionConfig{}, ColourTable::from_thresholds({}));
+  // Slow drift (smoothed) then a sudden step (reset), then back.
+  const double gains[] = {1.0, 0.95, 0.9, 0.85, 0.8, 0.8, 0.8, 1.35, 1.35, 1.0};
+  std::uint64_t seq = 0;
+  bool saw_reset = false;
+  for (const double g : gains) {
+    const Labelled l = render(real_carpet(), g, ++seq);
+    const VisionResult& r = pipeline.process(l.frame.view, cam.head);
+    ASSERT_TRUE(r.field_colour.valid);
+    EXPECT_EQ(r.field_colour.source, ColourSource::kFrame);
+    // Within the smoothing lag of the true field luminance.
+    EXPECT_NEAR(r.field_colour.y, 95.0 * g, 6.0) << "gain " << g;
+    saw_reset = saw_reset || r.field_colour.reset;
+    const Score line = score(pipeline.classes(), l, ColourClass::kLine);
+    const Score field = score(pipeline.classes(), l, ColourClass::kField);
+    EXPECT_GE(line.recall, 0.9) << "gain " << g;
+    EXPECT_GE(field.recall, 0.9) << "gain " << g;
+    EXPECT_GE(r.line_count, 2U) << "gain " << g;
+  }
+  EXPECT_TRUE(saw_reset);  // the step to 1.35 restarted the smoothing
+}
+
+TEST(FieldColour, NoFieldInViewHoldsThenFallsBackToTheTable) {
+  Camera cam;
+  AdaptiveColourParams params;
+  params.hold_frames = 3;
+  VisionConfig config;
+  config.adaptive = params;
+  VisionPipeline pipeline(config, ColourTable::from_thresholds({}));
+  const Labelled field = render(real_carpet());
+  ASSERT_TRUE(pipeline.process(field.frame.view, cam.head).field_colour.valid);
+  // A grey wall fills the view: no green-ish dominant chroma.
+  Palette wall = real_carpet();
+  wall.field_u = wall.line_u_lo = wall.line_u_hi = 128;
+  wall.field_v_left = wall.field_v_right = wall.line_v = 128;
+  wall.line_y_lo = wall.line_y_hi = wall.field_y = 120;
+  const Labelled grey = render(wall);
+  EXPECT_FALSE(FieldColourEstimator::measure(grey.frame.view, std::vector<int>(640, 0), params).valid);
+  for (int k = 1; k <= 3; ++k) {
+    const VisionResult& r = pipeline.process(grey.frame.view, cam.head);
+    EXPECT_TRUE(r.field_colour.valid) << k;
+    EXPECT_EQ(r.field_colour.source, ColourSource::kPrevious) << k;
+    EXPECT_EQ(r.field_colour.age, k);
+    EXPECT_LT(r.field_colour.confidence, 0.9);
+  }
+  const VisionResult& r = pipeline.process(grey.frame.view, cam.head);
+  EXPECT_FALSE(r.field_colour.valid);
+  EXPECT_EQ(r.field_colour.source, ColourSource::kTable);
+  EXPECT_EQ(r.field_colour.confidence, 0.0);
+  // And the field again: measured afresh.
+  EXPECT_EQ(pipeline.process(field.frame.view, cam.head).field_colour.source, ColourSource::kFrame);
+}
+
+TEST(FieldColour, TableModeNeverEstimates) {
+  Camera cam;
+  VisionConfig config;
+  config.colour_mode = ColourMode::kTable;
+  VisionPipeline pipeline(config, ColourTable::from_thresholds({}));
+  const Labelled l = render(real_carpet());
+  const VisionResult& r = pipeline.process(l.frame.view, cam.head);
+  EXPECT_FALSE(r.field_colour.valid);
+  EXPECT_EQ(r.field_colour.source, ColourSource::kTable);
+  EXPECT_LT(score(pipeline.classes(), l, ColourClass::kLine).recall, 0.5);
+}
+
+TEST(FieldColour, AdaptivePipelineFindsTheLinesTheTableMisses) {
+  Camera cam;
+  const Labelled l = render(real_carpet());
+  VisionConfig adaptive;
+  VisionConfig table;
+  table.colour_mode = ColourMode::kTable;
+  VisionPipeline a(adaptive, ColourTable::from_thresholds({}));
+  VisionPipeline t(table, ColourTable::from_thresholds({}));
+  const std::size_t with_adaptive = a.process(l.frame.view, cam.head).line_count;
+  const std::size_t with_table = t.process(l.frame.view, cam.head).line_count;
+  EXPECT_GE(with_adaptive, 2U);  // the halfway line and the touch line
+  EXPECT_LT(with_table, with_adaptive);
+}
+
+}  // namespace
+}  // namespace ringlet::vision
