@@ -65,6 +65,7 @@ void BM_FieldColourEstimate(benchmark::State& state) {
   const hal::FrameView& view = state.range(0) != 0 ? f.bgr.view : f.yuyv.view;
   for (auto _ : state) benchmark::DoNotOptimize(estimator.update(view, f.rows).y);
   state.SetLabel(state.range(0) != 0 ? "BGR" : "YUYV");
+  state.counters["samples"] = estimator.estimate().samples;  // per_colour_sample_ns: the time over this
 }
 BENCHMARK(BM_FieldColourEstimate)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
@@ -163,6 +164,23 @@ void BM_Ball(benchmark::State& state) {
 }
 BENCHMARK(BM_Ball)->Unit(benchmark::kMicrosecond);
 
+// The robot candidate scan alone (no classifier): columns every 4 px, every classified row. The
+// cost model's per_robot_sample_ns is this time over the samples counter.
+void BM_RobotScan(benchmark::State& state) {
+  const Fixture& f = fixture();
+  ClassImage classes(640, 480);
+  classes.classify(f.yuyv.view, f.table, f.first, 1);
+  RobotDetector detector({});
+  RobotList out;
+  for (auto _ : state) {
+    detector.detect(classes, f.yuyv.view, f.cam.k, f.pose, 4, nullptr, 0, {}, out);
+    benchmark::DoNotOptimize(out.count);
+  }
+  state.counters["samples"] = static_cast<double>(640 / 4 * (480 - f.first));
+}
+BENCHMARK(BM_RobotScan)->Unit(benchmark::kMicrosecond);
+
+
 // One HOG/SVM classification: resample a window (a ball 20 px across, a robot 150 px tall), HOG,
 // dot product. Arg 0: the ball's 32×32 window, 1: the robot's 32×64.
 void BM_HogClassify(benchmark::State& state) {
@@ -194,6 +212,9 @@ void BM_PipelineHog(benchmark::State& state) {
   }
   const VisionResult& r = pipeline.result();
   state.counters["classified"] = r.balls.classified + r.robots.classified;
+  const CostModel model = default_cost_model();  // as in BM_Pipeline: the model beside the measurement
+  state.counters["model_host_us"] =
+      static_cast<double>(modelled_cost(r.work, model).count()) / model.board_slowdown / 1000.0;
 }
 BENCHMARK(BM_PipelineHog)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 

@@ -56,6 +56,23 @@ TEST(FirmwareConfig, SplConfigHasTheCameraAndAVisionTask) {
   EXPECT_EQ(vision->policy, executive::OverrunPolicy::kDegrade);
 }
 
+// The black-and-white ball and the HOG/SVM models: relative model paths resolve against the
+// configuration file's folder, like lut; the defaults are the orange ball, no models, robots on.
+TEST(FirmwareConfig, VisionBallModeAndModels) {
+  const auto defaults = parse_as_shipped(shipped_config_text());
+  EXPECT_EQ(defaults.vision.ball, "orange");
+  EXPECT_TRUE(defaults.vision.ball_model.empty());
+  EXPECT_TRUE(defaults.vision.robot_model.empty());
+  EXPECT_TRUE(defaults.vision.robots);
+  const auto cfg = parse_as_shipped(with_line(shipped_config_text(), "[telemetry]",
+                                              "[vision]\nball = \"bw\"\nball_model = \"models/b.hog\"\n"
+                                              "robot_model = \"/abs/r.hog\"\nrobots = false\n[telemetry]"));
+  EXPECT_EQ(cfg.vision.ball, "bw");
+  EXPECT_EQ(cfg.vision.ball_model, test::kShippedConfig.parent_path() / "models/b.hog");
+  EXPECT_EQ(cfg.vision.robot_model, std::filesystem::path("/abs/r.hog"));
+  EXPECT_FALSE(cfg.vision.robots);
+}
+
 TEST(FirmwareConfig, EightyThreeHertzByConfiguration) {
   const auto cfg = parse_as_shipped(with_line(shipped_config_text(), "period_us", "period_us = 12000"));
   EXPECT_EQ(cfg.executive.period, hal::Nanos{12'000'000});
@@ -120,6 +137,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"[telemetry]", "[vision]\nskip = 0\n[telemetry]", "vision.skip: must be between 1 and 1000"},
         BadCase{"[telemetry]", "[vision]\ncolour = \"lut\"\n[telemetry]",
                 "vision.colour: must be one of \"adaptive\", \"table\", got \"lut\""},
+        BadCase{"[telemetry]", "[vision]\nball = \"pink\"\n[telemetry]",
+                "vision.ball: must be one of \"orange\", \"bw\", got \"pink\""},
+        BadCase{"[telemetry]", "[vision]\nrobots = 1\n[telemetry]", "vision.robots: must be true or false"},
+        BadCase{"[telemetry]", "[vision]\nball_model = 3\n[telemetry]", "vision.ball_model: must be a string"},
+        BadCase{"[telemetry]", "[vision]\nrobot_model = false\n[telemetry]", "vision.robot_model: must be a string"},
         BadCase{"  { name = \"sense\"", "  { name = \"sense\", budget_us = 1.9 },",
                 "executive.tasks[0].budget_us: must be a whole number of microseconds, got 1.9"},
         BadCase{"timeout_s", "timeout_s = 1e6", "mission.timeout_s: must be between 0.01 and 86400, got 1e+06"},

@@ -160,6 +160,41 @@ TEST(FirmwareVision, MissingColourTableIsAConfigError) {
   }
 }
 
+// The HOG/SVM model keys: a missing file, a file that is no model, and a model for the other
+// target are refused at start-up naming the key, where it was written, and the file.
+std::string vision_start_error(const std::string& key, const std::string& file) {
+  const auto cfg = parse_as_shipped(with_line(spl(1.0), key + " =", key + " = \"" + file + "\""));
+  try {
+    FirmwareStack stack(cfg);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(FirmwareVision, BadHogModelsAreConfigErrors) {
+  const std::string missing = vision_start_error("ball_model", "no-such-model.hog");
+  EXPECT_NE(missing.find("spl_field.toml:"), std::string::npos) << missing;
+  EXPECT_NE(missing.find("vision.ball_model: "), std::string::npos) << missing;
+  EXPECT_NE(missing.find("no-such-model.hog"), std::string::npos) << missing;
+  const std::string corrupt = vision_start_error("robot_model", "../../vision/models/robot_bootstrap.hog.recipe.txt");
+  EXPECT_NE(corrupt.find("vision.robot_model: hog model "), std::string::npos) << corrupt;
+  EXPECT_NE(corrupt.find("robot_bootstrap.hog.recipe.txt"), std::string::npos) << corrupt;
+  const std::string swapped = vision_start_error("ball_model", "../../vision/models/robot_bootstrap.hog");
+  EXPECT_NE(swapped.find("vision.ball_model: hog model "), std::string::npos) << swapped;
+  EXPECT_NE(swapped.find("is a robot model, not a ball model"), std::string::npos) << swapped;
+}
+
+// The shipped models load, and the vision task provides RobotDetections (the contract check
+// accepts the stack); without the robot stage the task still starts.
+TEST(FirmwareVision, TheBootstrapModelsLoad) {
+  auto text = with_line(spl(1.0), "ball =", "ball = \"bw\"");
+  text = with_line(text, "ball_model =", "ball_model = \"../../vision/models/ball_bootstrap.hog\"");
+  text = with_line(text, "robot_model =", "robot_model = \"../../vision/models/robot_bootstrap.hog\"");
+  EXPECT_NO_THROW(FirmwareStack stack(parse_as_shipped(text)));
+  EXPECT_NO_THROW(FirmwareStack stack(parse_as_shipped(with_line(text, "robots =", "robots = false"))));
+}
+
 TEST(FirmwareVision, WithoutAVisionTaskNothingProvidesTheBall) {
   const auto cfg = parse_as_shipped(with_line(spl(1.0), "  { name = \"vision\"", ""));
   try {

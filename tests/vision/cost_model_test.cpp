@@ -3,6 +3,9 @@
 // levels, and a plain weighted sum.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "synthetic_field.hpp"
@@ -34,6 +37,9 @@ TEST(VisionCost, TheWorkCountDependsOnTheFrameNotOnTheClock) {
   EXPECT_EQ(plain.scanned_pixels, timed.scanned_pixels);
   EXPECT_EQ(plain.candidates, timed.candidates);
   EXPECT_EQ(plain.point_tests, timed.point_tests);
+  EXPECT_EQ(plain.colour_samples, timed.colour_samples);
+  EXPECT_EQ(plain.colour_rebuilds, timed.colour_rebuilds);
+  EXPECT_EQ(plain.robot_samples, timed.robot_samples);
   EXPECT_GT(plain.classified_pixels, 100'000);
   EXPECT_GT(plain.point_tests, 0);
   EXPECT_EQ(modelled_cost(plain), modelled_cost(timed));
@@ -53,6 +59,72 @@ TEST(VisionCost, HigherDegradeLevelsCostLess) {
   EXPECT_LT(modelled_cost(p.process(frame.view, cam.head, {}, 0).work), hal::Nanos{3'000'000});
 }
 
+// The adaptive colour estimate and table rebuild are counted when they run, not in table mode.
+TEST(VisionCost, TheAdaptiveColourWorkIsCountedWhenItRuns) {
+  testing::Camera cam;
+  const auto frame = testing::render(testing::field_scene(), cam, hal::PixelFormat::kYuyv);
+  VisionPipeline adaptive(VisionConfig{}, ColourTable::from_thresholds({}));
+  VisionConfig table_config;
+  table_config.colour_mode = ColourMode::kTable;
+  VisionPipeline table(table_config, ColourTable::from_thresholds({}));
+  const VisionResult& a = adaptive.process(frame.view, cam.head);
+  ASSERT_TRUE(a.field_colour.valid);
+  EXPECT_EQ(a.work.colour_samples, a.field_colour.samples);
+  EXPECT_GT(a.work.colour_samples, 1000);
+  EXPECT_EQ(a.work.colour_rebuilds, 1);
+  const VisionResult& t = table.process(frame.view, cam.head);
+  EXPECT_EQ(t.work.colour_samples, 0);
+  EXPECT_EQ(t.work.colour_rebuilds, 0);
+  EXPECT_EQ(t.work.classified_pixels, a.work.classified_pixels);
+  EXPECT_GT(modelled_cost(a.work), modelled_cost(t.work)) << "the estimate and the rebuild cost something";
+}
+
+HogSvm accept_all(HogTarget t, const HogParams& hog) {
+  return HogSvm(t, hog, std::vector<float>(static_cast<std::size_t>(hog.feature_length()), 0.01f), 0.0, -1e9);
+}
+
+// Every HOG/SVM classification is counted, each window costs more than the whole candidate scan
+// per sample, and the levels that drop the classifiers cost less: in lockstep the degrade policy
+// sees the classifiers' cost.
+TEST(VisionCost, HogClassificationsAreCountedAndDegradingDropsTheirCost) {
+  testing::Camera cam;
+  testing::Scene scene = testing::field_scene();
+  scene.ball_black_white = true;
+  scene.blobs.push_back({{1.0, 0.5}, {1.3, 0.7}});  // a white blob: candidates for both detectors
+  const auto frame = testing::render(scene, cam, hal::PixelFormat::kYuyv);
+  VisionConfig config;
+  config.ball.mode = BallMode::kBlackWhite;
+  VisionPipeline with(config, ColourTable::from_thresholds({}));
+  VisionPipeline without(config, ColourTable::from_thresholds({}));
+  ASSERT_EQ(with.set_classifier(accept_all(HogTarget::kBall, HogParams::ball())), "");
+  ASSERT_EQ(with.set_classifier(accept_all(HogTarget::kRobot, HogParams::robot())), "");
+  const VisionResult& r = with.process(frame.view, cam.head);
+  EXPECT_EQ(r.work.ball_windows, r.balls.classified);
+  EXPECT_EQ(r.work.robot_windows, r.robots.classified);
+  ASSERT_GT(r.work.ball_windows + r.work.robot_windows, 0);
+  EXPECT_GT(r.work.robot_samples, 0);
+  const WorkCount verified = r.work;
+  const WorkCount unverified = without.process(frame.view, cam.head).work;
+  EXPECT_EQ(unverified.ball_windows + unverified.robot_windows, 0);
+  const CostModel m = default_cost_model();
+  const hal::Nanos windows{std::llround(m.board_slowdown * (m.per_ball_window_ns * static_cast<double>(verified.ball_windows) +
+                                                            m.per_robot_window_ns * static_cast<double>(verified.robot_windows)))};
+  EXPECT_NEAR(static_cast<double>((modelled_cost(verified) - modelled_cost(unverified)).count()),
+              static_cast<double>(windows.count()), 2.0)
+      << "the same frame, the classifications the only difference";
+  hal::Nanos previous = hal::Nanos::max();
+  for (int level = 0; level < kDegradeLevels; ++level) {
+    const VisionResult& at = with.process(frame.view, cam.head, {}, level);
+    const hal::Nanos cost = modelled_cost(at.work);
+    EXPECT_LT(cost, previous) << "level " << level;
+    previous = cost;
+    if (level == kDegradeLevels - 1) {
+      EXPECT_EQ(at.work.ball_windows + at.work.robot_windows, 0) << "the classifiers are dropped";
+    }
+  }
+  EXPECT_LT(modelled_cost(verified), hal::Nanos{3'000'000}) << "the full pipeline fits the 3 ms budget";
+}
+
 TEST(VisionCost, TheModelIsAWeightedSumTimesTheBoardFactor) {
   CostModel m;
   m.board_slowdown = 2.0;
@@ -62,8 +134,14 @@ TEST(VisionCost, TheModelIsAWeightedSumTimesTheBoardFactor) {
   m.per_scanned_pixel_ns = 3.0;
   m.per_candidate_ns = 4.0;
   m.per_point_test_ns = 5.0;
-  const WorkCount w{10, 20, 30, 40, 50};
-  EXPECT_EQ(modelled_cost(w, m), hal::Nanos{2 * (100 + 10 + 40 + 90 + 160 + 250)});
+  m.per_colour_sample_ns = 6.0;
+  m.per_colour_rebuild_ns = 7.0;
+  m.per_robot_sample_ns = 8.0;
+  m.per_ball_window_ns = 9.0;
+  m.per_robot_window_ns = 10.0;
+  const WorkCount w{10, 20, 30, 40, 50, 60, 1, 80, 90, 100};
+  EXPECT_EQ(modelled_cost(w, m),
+            hal::Nanos{2 * (100 + 10 + 40 + 90 + 160 + 250 + 360 + 7 + 640 + 810 + 1000)});
   EXPECT_EQ(modelled_cost(WorkCount{}, m), hal::Nanos{200});
 }
 

@@ -27,7 +27,12 @@ hal::Nanos modelled_cost(const WorkCount& work, const CostModel& model) noexcept
                          model.per_ball_sample_ns * static_cast<double>(work.ball_samples) +
                          model.per_scanned_pixel_ns * static_cast<double>(work.scanned_pixels) +
                          model.per_candidate_ns * static_cast<double>(work.candidates) +
-                         model.per_point_test_ns * static_cast<double>(work.point_tests);
+                         model.per_point_test_ns * static_cast<double>(work.point_tests) +
+                         model.per_colour_sample_ns * static_cast<double>(work.colour_samples) +
+                         model.per_colour_rebuild_ns * static_cast<double>(work.colour_rebuilds) +
+                         model.per_robot_sample_ns * static_cast<double>(work.robot_samples) +
+                         model.per_ball_window_ns * static_cast<double>(work.ball_windows) +
+                         model.per_robot_window_ns * static_cast<double>(work.robot_windows);
   return hal::Nanos{static_cast<std::int64_t>(std::llround(host_ns * model.board_slowdown))};
 }
 

@@ -76,7 +76,11 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     // then the small per-frame tables; the static table when no field colour is known.
     if (config_.colour_mode == ColourMode::kAdaptive) {
       r.field_colour = field_colour_.update(frame, first_row_);
-      if (r.field_colour.valid) adaptive_.build(r.field_colour, k.width, k.height);
+      r.work.colour_samples = r.field_colour.samples;
+      if (r.field_colour.valid) {
+        adaptive_.build(r.field_colour, k.width, k.height);
+        r.work.colour_rebuilds = 1;
+      }
     }
     classified = r.field_colour.valid ? classes_.classify(frame, adaptive_, r.horizon_row, level.class_step)
                                       : classes_.classify(frame, table_, r.horizon_row, level.class_step);
@@ -89,6 +93,7 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
                       level.ball_classify, deadline, r.balls);
       if (r.balls.count > 0) r.ball = r.balls.balls[0];
       r.cut.classifications_cut += r.balls.classifications_cut;
+      r.work.ball_windows = r.balls.classified;
     } else {
       r.ball = ball_.detect(classes_, k, pose, level.ball_stride);
       if (r.ball.seen) {
@@ -103,6 +108,11 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     robots_.detect(classes_, frame, k, pose, level.ball_stride, robot_svm_ ? &*robot_svm_ : nullptr,
                    level.robot_classify, deadline, r.robots);
     r.cut.classifications_cut += r.robots.classifications_cut;
+    // Columns every ball stride (rounded to the class step), every classified row.
+    const int step = level.class_step;
+    const int columns_stride = std::max(step, (std::max(level.ball_stride, 1) + step - 1) / step * step);
+    r.work.robot_samples = ground_pixels / (static_cast<std::int64_t>(columns_stride) * step);
+    r.work.robot_windows = r.robots.classified;
     lap(Stage::kRobots);
   }
   bool scanned = false;

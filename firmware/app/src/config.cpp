@@ -208,6 +208,11 @@ void read_vision(Section& vision, VisionSettings& v, const std::filesystem::path
   v.max_trials = vision.integer("max_trials", v.max_trials, 1, 10000);
   v.skip = vision.integer("skip", v.skip, 1, 1000);
   v.colour = vision.text("colour", v.lut.empty() ? "adaptive" : "table", {"adaptive", "table"});
+  v.ball = vision.text("ball", v.ball, {"orange", "bw"});
+  // The models are read and checked when the vision task is made (make_vision), like the table.
+  v.ball_model = vision.path("ball_model", base_dir);
+  v.robot_model = vision.path("robot_model", base_dir);
+  v.robots = vision.boolean("robots", v.robots);
   vision.reject_unknown();
 }
 

@@ -5,6 +5,28 @@
 
 namespace ringlet::firmware {
 
+namespace {
+
+// Loads the HOG/SVM model `file` (when set) and installs it as the pipeline's `target` classifier;
+// a missing, corrupt or wrong-target file is a ConfigError naming the key, where it was written,
+// and the file (the loader's message names it).
+void install_model(vision::VisionPipeline& pipeline, const FirmwareConfig& config, const std::string& key,
+                   const std::filesystem::path& file, vision::HogTarget target) {
+  if (file.empty()) return;
+  const std::string at = config.positions.at(key) + ": " + key + ": ";
+  vision::HogSvmLoad loaded = vision::HogSvm::load(file);
+  if (!loaded.model) throw ConfigError(at + loaded.error);
+  if (loaded.model->target() != target) {
+    throw ConfigError(at + "hog model " + file.string() + ": is a " + vision::to_string(loaded.model->target()) +
+                      " model, not a " + vision::to_string(target) + " model");
+  }
+  if (std::string why = pipeline.set_classifier(std::move(*loaded.model)); !why.empty()) {
+    throw ConfigError(at + file.string() + ": " + why);
+  }
+}
+
+}  // namespace
+
 std::unique_ptr<vision::VisionPipeline> make_vision(const FirmwareConfig& config) {
   vision::ColourTable table = vision::ColourTable::from_thresholds(vision::ColourThresholds{});
   if (!config.vision.lut.empty()) {
@@ -19,7 +41,12 @@ std::unique_ptr<vision::VisionPipeline> make_vision(const FirmwareConfig& config
   v.ransac.skip = config.vision.skip;
   v.ransac.seed = config.vision.seed;
   v.colour_mode = config.vision.colour == "table" ? vision::ColourMode::kTable : vision::ColourMode::kAdaptive;
-  return std::make_unique<vision::VisionPipeline>(v, std::move(table));
+  v.ball.mode = config.vision.ball == "bw" ? vision::BallMode::kBlackWhite : vision::BallMode::kOrange;
+  v.robots = config.vision.robots;
+  auto pipeline = std::make_unique<vision::VisionPipeline>(v, std::move(table));
+  install_model(*pipeline, config, "vision.ball_model", config.vision.ball_model, vision::HogTarget::kBall);
+  install_model(*pipeline, config, "vision.robot_model", config.vision.robot_model, vision::HogTarget::kRobot);
+  return pipeline;
 }
 
 std::unique_ptr<executive::Task> VisionTask::make(TaskServices& services) {
@@ -84,7 +111,13 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   if (r.cut.deadline_hit) ++stats_.cut;
   if (r.degrade_level > 0) ++stats_.degraded;
   board_.post(vision::to_field_lines(r));
+  // Black and white: r.ball is the best verified ball whenever the classifier ran (an unverified
+  // candidate, confidence ≤ 0.3, only when no model is installed or the degrade level dropped it).
   board_.post(vision::to_ball_belief(r));
+  if (pipeline_->config().robots) {
+    stats_.robots += r.robots.count;
+    board_.post(vision::to_robot_detections(r));
+  }
 }
 
 }  // namespace ringlet::firmware

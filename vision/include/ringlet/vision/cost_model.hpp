@@ -20,7 +20,13 @@ struct WorkCount {
   std::int64_t ball_samples = 0;       // class-image samples the ball detector looked at
   std::int64_t scanned_pixels = 0;     // pixels walked by the scan lines (vertical + horizontal)
   std::int64_t candidates = 0;         // scan points offered to RANSAC
-  std::int64_t point_tests = 0;        // RANSAC trials × points each trial tested
+  std::int64_t point_tests = 0;        // RANSAC trials × points each trial tested, and the centre circle's
+  // Appended (issue 10), so that older brace-initialised counts keep their meaning:
+  std::int64_t colour_samples = 0;     // pixels the adaptive field-colour estimate sampled
+  std::int64_t colour_rebuilds = 0;    // adaptive classification tables rebuilt (0 or 1 per frame)
+  std::int64_t robot_samples = 0;      // class-image samples the robot candidate scan looked at
+  std::int64_t ball_windows = 0;       // HOG/SVM classifications of ball candidates (resample, HOG, dot product)
+  std::int64_t robot_windows = 0;      // HOG/SVM classifications of robot candidates
 };
 
 struct CostModel {
@@ -31,6 +37,11 @@ struct CostModel {
   double per_scanned_pixel_ns = 0.0;
   double per_candidate_ns = 0.0;
   double per_point_test_ns = 0.0;
+  double per_colour_sample_ns = 0.0;
+  double per_colour_rebuild_ns = 0.0;
+  double per_robot_sample_ns = 0.0;
+  double per_ball_window_ns = 0.0;
+  double per_robot_window_ns = 0.0;
 };
 
 /// The shipped model (coefficients measured on the development host).

@@ -77,6 +77,10 @@ struct VisionSettings {
   int skip = 10;              // Mi-Pal's RANSAC_SKIP
   std::string colour;         // "adaptive" (field colour from each frame, the table as fallback) or "table";
                               // default: "table" when lut is given, else "adaptive"
+  std::string ball = "orange";  // "orange" (colour blobs) or "bw" (the SPL's black-and-white ball, HOG/SVM verified)
+  std::filesystem::path ball_model;   // HOG/SVM model (ringlet-train-hog) verifying bw ball candidates; empty: none
+  std::filesystem::path robot_model;  // HOG/SVM model verifying robot candidates; empty: none (unverified obstacles)
+  bool robots = true;                 // the robot stage runs (RobotDetections posted)
 };
 
 /// Where each key of the file was written, so that problems found after parsing (binding the

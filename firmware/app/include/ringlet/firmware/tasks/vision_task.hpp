@@ -1,5 +1,5 @@
 #pragma once
-// Camera → vision pipeline → whiteboard (FieldLines, BallBelief). Runs when the table says (every
+// Camera → vision pipeline → whiteboard (FieldLines, BallBelief, RobotDetections). Runs when the table says (every
 // camera period); processes the newest frame once, with the camera posture of its capture time
 // (head joints and torso tilt) read back from the whiteboard's HeadPosture generations, inside the
 // task's deadline (and at the executive's degrade level).
@@ -23,12 +23,12 @@ enum class VisionDeadline : std::uint8_t { kNone, kWall, kCpu };
 class VisionTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{"vision", kTypeNames<wb::HeadPosture>,
-                                                kTypeNames<wb::FieldLines, wb::BallBelief>,
+                                                kTypeNames<wb::FieldLines, wb::BallBelief, wb::RobotDetections>,
                                                 here()};
   /// An activation that finds no new camera frame.
   static constexpr hal::Nanos kNoFrameCost{2'000};
 
-  /// ConfigError when there is no camera or the colour table cannot be loaded.
+  /// ConfigError when there is no camera or the colour table or a HOG/SVM model cannot be loaded.
   static std::unique_ptr<executive::Task> make(TaskServices& services);
   VisionTask(hal::Camera& camera, std::unique_ptr<vision::VisionPipeline> pipeline, wb::Whiteboard& board,
              VisionDeadline deadline, VisionStats& stats) noexcept;
@@ -49,7 +49,7 @@ class VisionTask final : public executive::Task {
   hal::Nanos cost_{0};
 };
 
-/// The vision pipeline for [camera] and [vision] (its colour table loaded: ConfigError if not).
+/// The vision pipeline for [camera] and [vision] (its colour table and HOG/SVM models loaded: ConfigError if not).
 [[nodiscard]] std::unique_ptr<vision::VisionPipeline> make_vision(const FirmwareConfig& config);
 
 }  // namespace ringlet::firmware
