@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace ringlet::vision::evaluate {
@@ -115,7 +116,7 @@ ObjectCounts score_robots(std::span<const FoundRobot> found, std::span<const Tru
       const TruthRobot& t = truth[j];
       if (!t.in_front || !t.visible) continue;
       const double d =
-          t.foot_projects ? std::hypot(found[i].foot_u - t.foot_u, found[i].foot_v - t.foot_v) : INFINITY;
+          t.foot_projects ? std::hypot(found[i].foot_u - t.foot_u, found[i].foot_v - t.foot_v) : std::numeric_limits<double>::infinity();
       const double tolerance = std::max(p.foot_share * (t.has_box ? t.u1 - t.u0 : 0.0), p.min_foot_px);
       if (d <= tolerance || (t.has_box && iou(found[i], t) >= p.min_iou)) {
         pairs.push_back({std::isfinite(d) ? d : 1e9, i, j});

@@ -58,9 +58,13 @@ std::optional<Box> parse_box(const nlohmann::json& o, const std::string& where, 
   return box;
 }
 
+/// The share of the object that shows: visible_fraction (of its in-image pixels, the share not
+/// hidden) times, for a ball cut by the image's edge, in_image_fraction (ringlet-dataset's balls).
 double visible_fraction(const nlohmann::json& o, const std::string& where) {
-  if (!o.contains("visible_fraction")) return 1.0;
-  return number(o["visible_fraction"], where + ".visible_fraction");
+  double share = 1.0;
+  if (o.contains("visible_fraction")) share = number(o["visible_fraction"], where + ".visible_fraction");
+  if (o.contains("in_image_fraction")) share *= number(o["in_image_fraction"], where + ".in_image_fraction");
+  return share;
 }
 
 // A pentagon (or hexagon) patch of the ball's pattern, projected onto the disc.
