@@ -62,32 +62,25 @@ nlohmann::json object_json(const ObjectCounts& c, const char* error_name) {
 
 void print_objects(const EvalReport& r, std::ostream& os) {
   if (r.object_frames == 0) {
-    os << "
-balls and robots: not scored (no frame carries balls[] and robots[] truth: generator version < 3)
-";
+    os << "\nballs and robots: not scored (no frame carries balls[] and robots[] truth: generator version < 3)\n";
     return;
   }
   const BallMatchParams& bm = r.ball_match;
   const RobotMatchParams& rm = r.robot_match;
-  os << "
-ball (" << r.ball_mode << ", model " << r.ball_model << ") on " << r.object_frames
+  os << "\nball (" << r.ball_mode << ", model " << r.ball_model << ") on " << r.object_frames
      << " frames: a match is a centre within max(" << bm.centre_share << " x radius, " << bm.min_centre_px
-     << " px); expected within " << bm.max_distance_m << " m and >= " << bm.min_visible * 100.0 << " % visible
-";
+     << " px); expected within " << bm.max_distance_m << " m and >= " << bm.min_visible * 100.0 << " % visible\n";
   const auto print = [&](const ObjectCounts& c, const char* error) {
     os << "  expected " << c.expected << ", recalled " << c.recalled << ", detections " << c.detections << " ("
-       << c.true_positives << " right)
-";
+       << c.true_positives << " right)\n";
     os << "  precision " << fmt("%.3f", c.precision()) << "  recall " << fmt("%.3f", c.recall()) << "  F1 "
        << fmt("%.3f", c.f1()) << "  " << error << " mean " << fmt("%.1f", 100.0 * c.mean_error()) << " %  max "
-       << fmt("%.1f", 100.0 * c.error_max) << " % (" << c.errors << ")
-";
+       << fmt("%.1f", 100.0 * c.error_max) << " % (" << c.errors << ")\n";
   };
   print(r.balls, "relative distance error");
   os << "robots (model " << r.robot_model << "): a match is a foot point within max(" << rm.foot_share
      << " x box width, " << rm.min_foot_px << " px) or box IoU >= " << rm.min_iou << "; expected within "
-     << rm.max_distance_m << " m, foot in the image, >= " << rm.min_visible * 100.0 << " % visible
-";
+     << rm.max_distance_m << " m, foot in the image, >= " << rm.min_visible * 100.0 << " % visible\n";
   print(r.robots, "relative foot distance error");
 }
 
