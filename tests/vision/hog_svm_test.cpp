@@ -126,19 +126,20 @@ TEST(HogSvm, RandomBytesNeverGiveAModel) {
   }
 }
 
-// The committed bootstrap models load, are for what their names say, and are labelled bootstrap
-// in their recipes.
-TEST(HogSvm, CommittedBootstrapModelsLoad) {
+// The committed models load, are for what their names say, and their recipes say they were
+// trained on ringlet-dataset frames (not the trainer's synthetic bootstrap frames) with a command.
+TEST(HogSvm, CommittedModelsLoad) {
   const std::filesystem::path dir = RINGLET_VISION_MODELS_DIR;
-  for (const auto& [name, target, params] : {std::tuple{"ball_bootstrap.hog", HogTarget::kBall, HogParams::ball()},
-                                             std::tuple{"robot_bootstrap.hog", HogTarget::kRobot, HogParams::robot()}}) {
+  for (const auto& [name, target, params] : {std::tuple{"ball.hog", HogTarget::kBall, HogParams::ball()},
+                                             std::tuple{"robot.hog", HogTarget::kRobot, HogParams::robot()}}) {
     const HogSvmLoad l = HogSvm::load(dir / name);
     ASSERT_TRUE(l.model.has_value()) << l.error;
     EXPECT_EQ(l.model->target(), target);
     EXPECT_EQ(l.model->params(), params);
     std::ifstream recipe(dir / (std::string(name) + ".recipe.txt"));
     const std::string text((std::istreambuf_iterator<char>(recipe)), std::istreambuf_iterator<char>());
-    EXPECT_NE(text.find("bootstrap: YES"), std::string::npos) << name;
+    EXPECT_NE(text.find("bootstrap: no"), std::string::npos) << name;
+    EXPECT_NE(text.find("\"generator\":\"ringlet-dataset\""), std::string::npos) << name;
     EXPECT_NE(text.find("command: ringlet-train-hog"), std::string::npos) << name;
   }
 }

@@ -7,6 +7,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
 #include "ringlet/vision/hog_svm.hpp"
 #include "samples.hpp"
 #include "trainer.hpp"
@@ -122,6 +125,29 @@ TEST_F(DatasetDir, NamesTheFileAndTheMissingField) {
   EXPECT_NE(error(HogTarget::kBall).find("frame_0000.png: cannot read image"), std::string::npos) << error(HogTarget::kBall);
   write("frame_0000.json", "{not json");
   EXPECT_NE(error(HogTarget::kBall).find("not valid JSON"), std::string::npos);
+}
+
+// ringlet-dataset (generator version 3) writes boxes as pixel edges [u0, v0, u1, v1] and null for an
+// object behind the camera: read as such, not as [x, y, w, h]. A ball's share inside the image
+// counts towards how visible it is.
+TEST_F(DatasetDir, ReadsTheDatasetsEdgeBoxes) {
+  cv::imwrite((dir_ / "frame_0000.png").string(), cv::Mat(48, 64, CV_8UC3, cv::Scalar(40, 120, 40)));
+  write("frame_0000.json", R"({"image": "frame_0000.png", "generator_version": 3, "balls": [)"
+                           R"({"box": [10, 20, 30, 60], "visible_fraction": 1}, {"box": null, "visible_fraction": 0},)"
+                           R"({"box": [1, 2, 5, 9], "visible_fraction": 0.2}, {"box": [40, 2, 80, 42], "visible_fraction": 1, "in_image_fraction": 0.4}]})");
+  const std::vector<LabelledFrame> frames = load_dataset(dir_, HogTarget::kBall, 0.5, 0);
+  ASSERT_EQ(frames.size(), 1U);
+  ASSERT_EQ(frames[0].objects.size(), 1U);
+  EXPECT_DOUBLE_EQ(frames[0].objects[0].x, 10.0);
+  EXPECT_DOUBLE_EQ(frames[0].objects[0].y, 20.0);
+  EXPECT_DOUBLE_EQ(frames[0].objects[0].w, 20.0);
+  EXPECT_DOUBLE_EQ(frames[0].objects[0].h, 40.0);
+  // Too hidden (20 %), and a ball mostly outside the image (40 % of its disc inside): not positives.
+  ASSERT_EQ(frames[0].ignore.size(), 2U);
+  EXPECT_DOUBLE_EQ(frames[0].ignore[0].w, 4.0);
+  EXPECT_DOUBLE_EQ(frames[0].ignore[1].w, 40.0);
+  write("frame_0000.json", R"({"image": "frame_0000.png", "generator_version": 3, "balls": [{"box": [10, 20, 5, 60]}]})");
+  EXPECT_NE(error(HogTarget::kBall).find("width and height must be positive"), std::string::npos);
 }
 
 }  // namespace

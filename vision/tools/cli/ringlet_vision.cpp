@@ -41,6 +41,9 @@ struct Options {
   int skip = RansacParams{}.skip;
   int repeat = 1;
   bool compact = false;
+  std::string ball_mode = "bw";
+  std::string ball_model;
+  std::string robot_model;
 };
 
 int run(const Options& o) {
@@ -57,7 +60,15 @@ int run(const Options& o) {
   for (const std::string& w : image.warnings) std::cerr << "ringlet-vision: warning: " << o.image << ": " << w << "\n";
   const cv::Mat& bgr = image.bgr;
 
+  config.ball.mode = o.ball_mode == "orange" ? BallMode::kOrange : BallMode::kBlackWhite;
+  std::vector<HogSvm> models;
+  if (!o.ball_model.empty()) models.push_back(tools::load_hog_model(o.ball_model, HogTarget::kBall, "--ball-model"));
+  if (!o.robot_model.empty()) models.push_back(tools::load_hog_model(o.robot_model, HogTarget::kRobot, "--robot-model"));
+
   VisionPipeline pipeline(config, std::move(table));
+  for (HogSvm& m : models) {
+    if (const std::string why = pipeline.set_classifier(std::move(m)); !why.empty()) throw tools::ToolError(why);
+  }
   const hal::CameraPosture posture = o.camera.posture();
   // Stages are timed on this thread's CPU clock (what the robot's budget is judged on; other
   // processes on the host do not inflate it), the whole frame on the wall clock too. The deadline
@@ -125,7 +136,7 @@ int main(int argc, char** argv) {
   Options o;
   CLI::App app{"ringlet-vision: detect field lines, the centre circle and the ball in one image (PNG or JPEG) "
                "with Ringlet's pipeline; prints JSON on stdout. Exit codes: 0 done, 2 bad input "
-               "(flags, image, colour table), 1 internal or output error."};
+               "(flags, image, colour table, model files), 1 internal or output error."};
   app.add_option("image", o.image, "the picture (PNG, JPEG, ...), as the camera delivered it")->required();
   app.add_option("--lut", o.lut, "colour table file (RLUT, from ringlet-vision-calibrate); default: the built-in "
                                  "default thresholds");
@@ -140,6 +151,13 @@ int main(int argc, char** argv) {
   app.add_option("--repeat", o.repeat, "process the frame N times and add timing statistics (min, median, p99, max "
                                        "in ms) to the JSON and stderr")
       ->capture_default_str()->check(CLI::Range(1, 100000));
+  app.add_option("--ball-mode", o.ball_mode, "the ball's detector: bw (the SPL's black-and-white ball, verified by "
+                                             "--ball-model) or orange")
+      ->capture_default_str()->check(CLI::IsMember({"bw", "orange"}));
+  app.add_option("--ball-model", o.ball_model, "HOG/SVM model verifying black-and-white ball candidates (e.g. "
+                                               "vision/models/ball.hog; default: none, candidates unverified)");
+  app.add_option("--robot-model", o.robot_model, "HOG/SVM model verifying robot candidates (e.g. "
+                                                 "vision/models/robot.hog; default: none, candidates unverified)");
   app.add_flag("--compact", o.compact, "one-line JSON");
   o.camera.add_to(app);
   return tools::run_tool(app, argc, argv, "ringlet-vision", [&] { return run(o); });

@@ -104,6 +104,16 @@ ColourTable load_table(const std::filesystem::path& file) {
   return std::move(*loaded.table);
 }
 
+HogSvm load_hog_model(const std::filesystem::path& file, HogTarget target, const std::string& flag) {
+  HogSvmLoad load = HogSvm::load(file);
+  if (!load.model) throw ToolError(flag + " " + file.string() + ": " + load.error);
+  if (load.model->target() != target) {
+    throw ToolError(flag + " " + file.string() + ": a model for the " +
+                    (target == HogTarget::kBall ? "robots, not the ball" : "ball, not the robots"));
+  }
+  return *std::move(load.model);
+}
+
 CLI::Validator finite_range(double lo, double hi, const std::string& unit) {
   return CLI::Validator(
       [lo, hi, unit](const std::string& text) -> std::string {

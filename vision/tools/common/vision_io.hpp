@@ -62,6 +62,10 @@ struct LoadedImage {
 /// the default thresholds.
 [[nodiscard]] ColourTable load_table(const std::filesystem::path& file);
 
+/// A HOG/SVM model for `target` from `file` (vision/models/*.hog): ToolError "<flag> <file>: <why>"
+/// when it does not load or is a model for the other target.
+[[nodiscard]] HogSvm load_hog_model(const std::filesystem::path& file, HogTarget target, const std::string& flag);
+
 /// Camera and head options shared by the tools: image size, field of view (or fx/fy/cx/cy),
 /// mount, head yaw and pitch, torso pitch and roll (degrees). Every number must be finite and in
 /// its range (the --help text shows each range; yaw and pitch are the NAO's joint ranges,

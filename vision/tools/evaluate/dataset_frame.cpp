@@ -95,6 +95,44 @@ DatasetFrame load_dataset_frame(const fs::path& json_path) {
       t.visible_fraction = ring.at("visible_fraction").get<double>();
       f.rings.push_back(t);
     }
+    // Balls and robots (tools/README.md "The frame's JSON"): boxes are [u0, v0, u1, v1] or null.
+    if (j.contains("balls") && j.contains("robots")) {
+      f.has_objects = true;
+      for (const auto& b : j.at("balls")) {
+        TruthBall t;
+        t.in_front = b.at("in_front").get<bool>();
+        t.visible = b.at("visible").get<bool>();
+        t.u = b.at("image_centre").at(0).get<double>();
+        t.v = b.at("image_centre").at(1).get<double>();
+        t.radius_px = b.at("image_radius").get<double>();
+        t.distance_m = b.at("distance").get<double>();
+        t.visible_fraction = b.at("visible_fraction").get<double>();
+        t.in_image_fraction = b.at("in_image_fraction").get<double>();
+        f.balls.push_back(t);
+      }
+      for (const auto& r : j.at("robots")) {
+        TruthRobot t;
+        t.in_front = r.at("in_front").get<bool>();
+        t.visible = r.at("visible").get<bool>();
+        const auto& box = r.at("box");
+        if (!box.is_null()) {
+          t.has_box = true;
+          t.u0 = box.at(0).get<double>();
+          t.v0 = box.at(1).get<double>();
+          t.u1 = box.at(2).get<double>();
+          t.v1 = box.at(3).get<double>();
+        }
+        const hal::RobotPoint foot{r.at("foot").at(0).get<double>(), r.at("foot").at(1).get<double>()};
+        if (const auto px = hal::project(f.intrinsics, pose, {foot.x, foot.y, 0.0})) {
+          t.foot_projects = true;
+          t.foot_u = px->u;
+          t.foot_v = px->v;
+        }
+        t.distance_m = r.at("distance").get<double>();
+        t.visible_fraction = r.at("visible_fraction").get<double>();
+        f.robots.push_back(t);
+      }
+    }
   } catch (const nlohmann::json::exception& e) {
     throw ToolError(json_path.string() + ": not a ringlet-dataset frame record: " + e.what());
   }

@@ -1,7 +1,8 @@
 #pragma once
 // One frame of a ringlet-dataset folder: frame_NNNN.json (camera, head, ground truth) and its
 // picture. The truth for line detectors is the JSON's visible straight-line runs as image segments
-// with their painted width projected into the image.
+// with their painted width projected into the image; the balls' and robots' truth for the object
+// scores (object_score.hpp).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/sensors.hpp"
 #include "circle_score.hpp"
+#include "object_score.hpp"
 #include "segment_match.hpp"
 
 namespace ringlet::vision::evaluate {
@@ -24,6 +26,11 @@ struct DatasetFrame {
   hal::HeadJoints head{};
   std::vector<TruthSegment> lines;
   std::vector<TruthRing> rings;   // the centre circle(s): "rings" (frames without the field: none)
+  // Generator version 3 and later: every ball ("balls") and robot ("robots"); older frames: none
+  // (has_objects false, and they are not scored).
+  bool has_objects = false;
+  std::vector<TruthBall> balls;
+  std::vector<TruthRobot> robots;
 };
 
 /// The frame_*.json files of a dataset folder, in index order (by name; frame_10000 after

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <numeric>
+#include <optional>
 
 #include <opencv2/core.hpp>
 
@@ -153,6 +154,14 @@ EvalReport run_evaluation(const EvalOptions& o) {
   report.report_frames = test.size();
   report.frames_total = tune.size() + test.size();
   const ColourTable table = tools::load_table(o.lut);
+  std::optional<HogSvm> ball_model, robot_model;
+  if (!o.ball_model.empty()) ball_model = tools::load_hog_model(o.ball_model, HogTarget::kBall, "--ball-model");
+  if (!o.robot_model.empty()) robot_model = tools::load_hog_model(o.robot_model, HogTarget::kRobot, "--robot-model");
+  report.ball_mode = o.vision.ball.mode == BallMode::kBlackWhite ? "bw" : "orange";
+  report.ball_model = o.ball_model.empty() ? "none" : o.ball_model.string();
+  report.robot_model = o.robot_model.empty() ? "none" : o.robot_model.string();
+  report.ball_match = o.ball_match;
+  report.robot_match = o.robot_match;
   const int margin = o.vision.horizon_margin_px;
 
   // Which frames are which, checked before anything is scored.
@@ -208,6 +217,11 @@ EvalReport run_evaluation(const EvalOptions& o) {
       config.intrinsics = f.meta.intrinsics;
       config.mount = f.meta.mount;
       pipeline = std::make_unique<VisionPipeline>(config, table);
+      for (const std::optional<HogSvm>* m : {&ball_model, &robot_model}) {
+        if (!*m) continue;
+        const std::string why = pipeline->set_classifier(**m);
+        if (!why.empty()) throw tools::ToolError((m == &ball_model ? o.ball_model : o.robot_model).string() + ": " + why);
+      }
     }
     const hal::FrameView view = yuyv_view(f);
     const auto start = Clock::now();
@@ -229,6 +243,22 @@ EvalReport run_evaluation(const EvalOptions& o) {
       if (ring.visible) rings.push_back(project_ring(ring, f.meta.intrinsics, pose));
     }
     report.rings_visible += rings.empty() ? 0U : 1U;
+    if (f.meta.has_objects) {
+      ++report.object_frames;
+      std::vector<FoundBall> balls;
+      for (std::size_t b = 0; b < result.balls.count; ++b) {
+        const BallDetection& d = result.balls.balls[b];
+        balls.push_back({d.centre.u, d.centre.v, d.ground_valid, d.distance_m});
+      }
+      report.balls += score_balls(balls, f.meta.balls, o.ball_match);
+      std::vector<FoundRobot> robots;
+      for (std::size_t r = 0; r < result.robots.count; ++r) {
+        const RobotDetection& d = result.robots.robots[r];
+        robots.push_back({d.left, d.top, d.width, d.height, d.foot.u, d.foot.v, d.distance_m});
+      }
+      report.robots += score_robots(robots, f.meta.robots, f.meta.intrinsics.width, f.meta.intrinsics.height,
+                                    o.robot_match);
+    }
     const auto count_arcs = [&](DetectorReport& d, const std::vector<Segment2>& found) {
       const std::size_t arcs = count_arc_false_positives(found, f.meta.lines, rings, o.match);
       d.arc_false_positives += arcs;

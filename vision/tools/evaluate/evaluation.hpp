@@ -18,6 +18,7 @@
 
 #include "circle_score.hpp"
 #include "hough_baseline.hpp"
+#include "object_score.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "segment_match.hpp"
 
@@ -34,6 +35,13 @@ struct EvalOptions {
   int max_frames = 0;          // 0: all (of the test set)
   MatchParams match{};
   CircleMatchParams circle_match{};
+  BallMatchParams ball_match{};
+  RobotMatchParams robot_match{};
+  // HOG/SVM models installed in the pipeline (empty: none; the black-and-white ball and the
+  // robots are then reported unverified). A file that does not load, or a model for the other
+  // target, is a ToolError naming the flag (--ball-model / --robot-model) and the file.
+  std::filesystem::path ball_model;
+  std::filesystem::path robot_model;
   VisionConfig vision{};       // intrinsics and mount are replaced by each frame's
   /// (stage, done, total): "loading", "tuning", "evaluating".
   std::function<void(const char*, std::size_t, std::size_t)> progress;
@@ -75,6 +83,16 @@ struct EvalReport {
   std::size_t rings_visible = 0;     // test frames showing any of the ring
   CircleMatchParams circle_match{};
   MatchParams match{};
+  // Balls and robots (object_score.hpp), over the test frames that carry their truth (ringlet-dataset
+  // generator version 3 and later).
+  std::size_t object_frames = 0;
+  std::string ball_mode;             // "bw" or "orange"
+  std::string ball_model;            // file, or "none"
+  std::string robot_model;
+  ObjectCounts balls{};
+  ObjectCounts robots{};
+  BallMatchParams ball_match{};
+  RobotMatchParams robot_match{};
   /// Hough's median time / Ringlet's: > 1 means Ringlet is faster.
   [[nodiscard]] double speed_ratio() const;
 };

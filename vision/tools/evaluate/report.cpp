@@ -49,6 +49,41 @@ nlohmann::json detector_json(const DetectorReport& d) {
           {"time_ms", {{"median", d.median_ms()}, {"p99", d.p99_ms()}, {"mean", d.mean_ms()}, {"per_frame", d.time_ms}}}};
 }
 
+nlohmann::json object_json(const ObjectCounts& c, const char* error_name) {
+  return {{"precision", c.precision()},
+          {"recall", c.recall()},
+          {"f1", c.f1()},
+          {"detections", c.detections},
+          {"true_positives", c.true_positives},
+          {"expected", c.expected},
+          {"recalled", c.recalled},
+          {error_name, {{"mean", c.mean_error()}, {"max", c.error_max}, {"count", c.errors}}}};
+}
+
+void print_objects(const EvalReport& r, std::ostream& os) {
+  if (r.object_frames == 0) {
+    os << "\nballs and robots: not scored (no frame carries balls[] and robots[] truth: generator version < 3)\n";
+    return;
+  }
+  const BallMatchParams& bm = r.ball_match;
+  const RobotMatchParams& rm = r.robot_match;
+  os << "\nball (" << r.ball_mode << ", model " << r.ball_model << ") on " << r.object_frames
+     << " frames: a match is a centre within max(" << bm.centre_share << " x radius, " << bm.min_centre_px
+     << " px); expected within " << bm.max_distance_m << " m and >= " << bm.min_visible * 100.0 << " % visible\n";
+  const auto print = [&](const ObjectCounts& c, const char* error) {
+    os << "  expected " << c.expected << ", recalled " << c.recalled << ", detections " << c.detections << " ("
+       << c.true_positives << " right)\n";
+    os << "  precision " << fmt("%.3f", c.precision()) << "  recall " << fmt("%.3f", c.recall()) << "  F1 "
+       << fmt("%.3f", c.f1()) << "  " << error << " mean " << fmt("%.1f", 100.0 * c.mean_error()) << " %  max "
+       << fmt("%.1f", 100.0 * c.error_max) << " % (" << c.errors << ")\n";
+  };
+  print(r.balls, "relative distance error");
+  os << "robots (model " << r.robot_model << "): a match is a foot point within max(" << rm.foot_share
+     << " x box width, " << rm.min_foot_px << " px) or box IoU >= " << rm.min_iou << "; expected within "
+     << rm.max_distance_m << " m, foot in the image, >= " << rm.min_visible * 100.0 << " % visible\n";
+  print(r.robots, "relative foot distance error");
+}
+
 }  // namespace
 
 void print_report(const EvalReport& r, std::ostream& os) {
@@ -101,6 +136,7 @@ void print_report(const EvalReport& r, std::ostream& os) {
   os << "  precision " << fmt("%.3f", c.precision()) << "  recall " << fmt("%.3f", c.recall()) << "  F1 "
      << fmt("%.3f", c.f1()) << "  mean centre error " << fmt("%.3f", c.mean_centre_error_m()) << " m  mean radius error "
      << fmt("%.3f", c.mean_radius_error_m()) << " m\n";
+  print_objects(r, os);
 }
 
 nlohmann::json report_json(const EvalReport& r) {
@@ -127,6 +163,17 @@ nlohmann::json report_json(const EvalReport& r) {
           {"hough_tuning", tuning},
           {"detectors", {{"ringlet", detector_json(r.ringlet)}, {"hough", detector_json(r.baseline)}}},
           {"speed_ratio", r.speed_ratio()},
+          {"object_frames", r.object_frames},
+          {"ball_mode", r.ball_mode},
+          {"ball_model", r.ball_model},
+          {"robot_model", r.robot_model},
+          {"balls", object_json(r.balls, "distance_error")},
+          {"robots", object_json(r.robots, "foot_distance_error")},
+          {"ball_match", {{"centre_share", r.ball_match.centre_share}, {"min_centre_px", r.ball_match.min_centre_px},
+                          {"max_distance_m", r.ball_match.max_distance_m}, {"min_visible", r.ball_match.min_visible}}},
+          {"robot_match", {{"foot_share", r.robot_match.foot_share}, {"min_foot_px", r.robot_match.min_foot_px},
+                           {"min_iou", r.robot_match.min_iou}, {"max_distance_m", r.robot_match.max_distance_m},
+                           {"min_visible", r.robot_match.min_visible}}},
           {"circle",
            {{"precision", r.circle.precision()},
             {"recall", r.circle.recall()},

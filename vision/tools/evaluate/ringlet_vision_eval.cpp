@@ -11,9 +11,13 @@
 // frames anyone chose parameters on): a frame with the same generator, seed and index, or with
 // identical pixels, in both is refused (exit 2). The output names all the sets.
 //
-// Exit codes: 0 done · 2 bad input (flags, folder, frame records, images, colour table, too few
-// frames, overlapping tuning and test sets) · 1 internal or output error (cannot write --json or
-// --svg).
+// Balls and robots are scored too (object_score.hpp) on frames with balls[] and robots[] truth, with
+// the ball detector of --ball-mode (default bw) and the HOG/SVM models of --ball-model and
+// --robot-model installed.
+//
+// Exit codes: 0 done · 2 bad input (flags, folder, frame records, images, colour table, model
+// files, too few frames, overlapping tuning and test sets) · 1 internal or output error (cannot
+// write --json or --svg).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -49,7 +53,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> disjoint_from;
   bool quiet = false;
   CLI::App app{"ringlet-vision-eval: compare Ringlet's field-line detector with Canny + HoughLinesP on a "
-               "ringlet-dataset folder (precision, recall, F1, errors, time per frame). Exit codes: 0 done, "
+               "ringlet-dataset folder (precision, recall, F1, errors, time per frame); score the centre circle, "
+               "the balls and the robots. Exit codes: 0 done, "
                "2 bad input, 1 internal or output error."};
   app.add_option("dataset", dataset, "folder written by ringlet-dataset (png format)")->required();
   app.add_option("--lut", lut, "colour table for Ringlet (default: the built-in default thresholds)");
@@ -71,6 +76,14 @@ int main(int argc, char** argv) {
       ->capture_default_str()->check(tools::finite_range(0.0, 1000.0, "px"));
   app.add_option("--min-coverage", o.match.min_coverage, "matching: share of a true segment to cover for recall")
       ->capture_default_str()->check(tools::finite_range(0.0, 1.0, ""));
+  std::string ball_mode = "bw", ball_model, robot_model;
+  app.add_option("--ball-mode", ball_mode, "the ball's detector: bw (the SPL's black-and-white ball, HOG/SVM-verified "
+                                           "with --ball-model) or orange")
+      ->capture_default_str()->check(CLI::IsMember({"bw", "orange"}));
+  app.add_option("--ball-model", ball_model, "HOG/SVM model verifying black-and-white ball candidates (e.g. "
+                                             "vision/models/ball.hog; default: none, candidates unverified)");
+  app.add_option("--robot-model", robot_model, "HOG/SVM model verifying robot candidates (e.g. "
+                                               "vision/models/robot.hog; default: none, candidates unverified)");
   app.add_option("--json", json, "write the full report (per-frame times, tuning) as JSON");
   app.add_option("--svg", svg, "write a comparison chart (SVG)");
   app.add_flag("-q,--quiet", quiet, "no progress output");
@@ -79,6 +92,9 @@ int main(int argc, char** argv) {
     o.lut = lut;
     o.tune_set = tune_set;
     if (!tune_set.empty() && app.count("--tune") == 0) o.tune_frames = 0;  // all of the tuning set
+    o.vision.ball.mode = ball_mode == "orange" ? BallMode::kOrange : BallMode::kBlackWhite;
+    o.ball_model = ball_model;
+    o.robot_model = robot_model;
     o.disjoint_from.assign(disjoint_from.begin(), disjoint_from.end());
     if (!quiet) {
       const bool tty = isatty(fileno(stderr)) != 0;

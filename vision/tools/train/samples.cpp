@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -38,19 +39,32 @@ double number(const nlohmann::json& j, const std::string& where) {
   return v;
 }
 
-Box parse_box(const nlohmann::json& o, const std::string& where) {
-  if (!o.is_object() || !o.contains("box")) throw ToolError(where + ": missing \"box\": [x, y, w, h]");
+/// A box as [x, y, w, h], or (`edges`: ringlet-dataset generator version 3 and later, tools/README.md)
+/// as [u0, v0, u1, v1] in pixel edges, where null means the object projects to nothing (behind
+/// the camera): std::nullopt.
+std::optional<Box> parse_box(const nlohmann::json& o, const std::string& where, bool edges) {
+  const char* form = edges ? "[u0, v0, u1, v1]" : "[x, y, w, h]";
+  if (!o.is_object() || !o.contains("box")) throw ToolError(where + ": missing \"box\": " + form);
   const auto& b = o["box"];
-  if (!b.is_array() || b.size() != 4) throw ToolError(where + ".box: expected [x, y, w, h]");
+  if (edges && b.is_null()) return std::nullopt;
+  if (!b.is_array() || b.size() != 4) throw ToolError(where + ".box: expected " + form);
   Box box{number(b[0], where + ".box[0]"), number(b[1], where + ".box[1]"), number(b[2], where + ".box[2]"),
           number(b[3], where + ".box[3]")};
+  if (edges) {
+    box.w -= box.x;
+    box.h -= box.y;
+  }
   if (box.w <= 0 || box.h <= 0) throw ToolError(where + ".box: width and height must be positive");
   return box;
 }
 
+/// The share of the object that shows: visible_fraction (of its in-image pixels, the share not
+/// hidden) times, for a ball cut by the image's edge, in_image_fraction (ringlet-dataset's balls).
 double visible_fraction(const nlohmann::json& o, const std::string& where) {
-  if (!o.contains("visible_fraction")) return 1.0;
-  return number(o["visible_fraction"], where + ".visible_fraction");
+  double share = 1.0;
+  if (o.contains("visible_fraction")) share = number(o["visible_fraction"], where + ".visible_fraction");
+  if (o.contains("in_image_fraction")) share *= number(o["in_image_fraction"], where + ".in_image_fraction");
+  return share;
 }
 
 // A pentagon (or hexagon) patch of the ball's pattern, projected onto the disc.
@@ -182,12 +196,15 @@ std::vector<LabelledFrame> load_dataset(const std::filesystem::path& dir, HogTar
     }
     LabelledFrame f;
     f.source = src;
+    // ringlet-dataset writes boxes as pixel edges since generator version 3 (tools/README.md).
+    const bool edges = j.contains("generator_version") && j["generator_version"].is_number_integer() &&
+                       j["generator_version"].get<int>() >= 3;
     const auto add = [&](const Box& b, double visible) { (visible >= min_visible ? f.objects : f.ignore).push_back(b); };
     if (j.contains(key)) {
       if (!j[key].is_array()) throw ToolError(src + ": \"" + key + "\" must be an array of {\"box\": [x, y, w, h]}");
       for (std::size_t i = 0; i < j[key].size(); ++i) {
         const std::string where = src + ": " + key + "[" + std::to_string(i) + "]";
-        add(parse_box(j[key][i], where), visible_fraction(j[key][i], where));
+        if (const std::optional<Box> b = parse_box(j[key][i], where, edges)) add(*b, visible_fraction(j[key][i], where));
       }
     } else if (target == HogTarget::kBall && j.contains("ball")) {
       // A dataset of before issue 10: one ball with its image centre and radius.
