@@ -177,20 +177,20 @@ TEST(FirmwareVision, BadHogModelsAreConfigErrors) {
   EXPECT_NE(missing.find(".toml:"), std::string::npos) << missing;  // file:line:col of the key
   EXPECT_NE(missing.find("vision.ball_model: "), std::string::npos) << missing;
   EXPECT_NE(missing.find("no-such-model.hog"), std::string::npos) << missing;
-  const std::string corrupt = vision_start_error("robot_model", "../../vision/models/robot_bootstrap.hog.recipe.txt");
+  const std::string corrupt = vision_start_error("robot_model", "../../vision/models/robot.hog.recipe.txt");
   EXPECT_NE(corrupt.find("vision.robot_model: hog model "), std::string::npos) << corrupt;
-  EXPECT_NE(corrupt.find("robot_bootstrap.hog.recipe.txt"), std::string::npos) << corrupt;
-  const std::string swapped = vision_start_error("ball_model", "../../vision/models/robot_bootstrap.hog");
+  EXPECT_NE(corrupt.find("robot.hog.recipe.txt"), std::string::npos) << corrupt;
+  const std::string swapped = vision_start_error("ball_model", "../../vision/models/robot.hog");
   EXPECT_NE(swapped.find("vision.ball_model: hog model "), std::string::npos) << swapped;
   EXPECT_NE(swapped.find("is a robot model, not a ball model"), std::string::npos) << swapped;
 }
 
 // The shipped models load, and the vision task provides RobotDetections (the contract check
 // accepts the stack); without the robot stage the task still starts.
-TEST(FirmwareVision, TheBootstrapModelsLoad) {
+TEST(FirmwareVision, TheShippedModelsLoad) {
   auto text = with_line(spl(1.0), "ball =", "ball = \"bw\"");
-  text = with_line(text, "ball_model =", "ball_model = \"../../vision/models/ball_bootstrap.hog\"");
-  text = with_line(text, "robot_model =", "robot_model = \"../../vision/models/robot_bootstrap.hog\"");
+  text = with_line(text, "ball_model =", "ball_model = \"../../vision/models/ball.hog\"");
+  text = with_line(text, "robot_model =", "robot_model = \"../../vision/models/robot.hog\"");
   EXPECT_NO_THROW(FirmwareStack stack(parse_as_shipped(text)));
   EXPECT_NO_THROW(FirmwareStack stack(parse_as_shipped(with_line(text, "robots =", "robots = false"))));
 }

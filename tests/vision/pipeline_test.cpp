@@ -140,13 +140,13 @@ TEST(Pipeline, DeadlineCutsTrialsAndSaysSo) {
   EXPECT_EQ(full.cut.trials_skipped, 0);
   EXPECT_GT(full.ransac.trials_run, 30);
   EXPECT_EQ(full.stage_time[static_cast<std::size_t>(Stage::kRansac)].count() % 1000, 0);
-  // Reads before RANSAC: start, 6 laps, 6 stage checks (classify, ball, robots, scan, circle,
-  // RANSAC) = 13, and one per centre circle trial (40; no HOG model is installed, so no
-  // classification reads the clock); then one per line trial. A budget of 13 + 40 + 12 reads lets
-  // exactly 12 line trials run.
+  // Reads before RANSAC: start, 5 laps, 5 stage checks (classify, ball, scan, circle, RANSAC; no
+  // robot model is installed, so the robot stage does not run) = 11, and one per centre circle
+  // trial (40); then one per line trial. A budget of 11 + 40 + 12 reads lets exactly 12 line
+  // trials run.
   EXPECT_EQ(full.circle_stats.trials_run, 40);
   FakeStopwatch watch;
-  const VisionResult& cut = p.process(frame.view, cam.head, after_reads(watch, 13 + 40 + 12));
+  const VisionResult& cut = p.process(frame.view, cam.head, after_reads(watch, 11 + 40 + 12));
   EXPECT_TRUE(cut.cut.deadline_hit);
   EXPECT_TRUE(cut.cut.lines_not_extracted);
   EXPECT_EQ(cut.ransac.trials_run, 12);

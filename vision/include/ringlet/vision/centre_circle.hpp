@@ -45,7 +45,7 @@ struct CircleParams {
   double radius_m = 0.75;                // r0: the SPL centre circle (to the middle of the paint)
   double radius_tolerance = 0.25;        // accepted radius r0 × (1 ± this)
   int max_trials = 40;                   // two-point hypotheses per frame
-  int max_sample_points = 160;           // the trials see every k-th candidate, at most this many
+  int max_sample_points = 96;            // the trials see every k-th candidate, at most this many
   double min_pair_distance_m = 0.15;     // closer pairs fix the centre poorly
   double hypothesis_band_m = 0.06;       // a sample point supports a hypothesis this close to it
   double band_m = 0.04;                  // inlier band of the refined circle (the lines' tolerance)

@@ -41,7 +41,7 @@ enum class ColourMode : std::uint8_t {
 
 struct AdaptiveColourParams {
   // Estimation.
-  int sample_stride = 8;              // px between samples in both directions (more if the grid
+  int sample_stride = 12;             // px between samples in both directions (more if the grid
                                       // would exceed kMaxColourSamples)
   int min_samples = 64;               // fewer samples below the horizon: no estimate
   double min_field_fraction = 0.30;   // the field's chroma must hold this share of the samples

@@ -37,8 +37,8 @@ struct DegradeProfile {
   int ransac_skip = -1;   // RANSAC_SKIP (−1: ransac.skip): a sparser scan keeps more of its fewer candidates, so
                           // that lines keep enough points while trials × points still shrinks
   int circle_trials = -1; // centre circle hypotheses (−1: ransac.circle.max_trials)
-  int ball_classify = 4;  // black-and-white ball candidates given to the HOG/SVM (0: classifier dropped)
-  int robot_classify = 2; // robot candidates given to the HOG/SVM (0: classifier dropped)
+  int ball_classify = 3;  // black-and-white ball candidates given to the HOG/SVM (0: classifier dropped)
+  int robot_classify = 1; // robot candidates given to the HOG/SVM (0: classifier dropped)
 };
 
 inline constexpr int kDegradeLevels = 3;
@@ -52,7 +52,7 @@ struct VisionConfig {
   RansacParams ransac{};
   BallParams ball{};                     // ball.mode picks the orange or the black-and-white detector
   BwBallParams bw_ball{};
-  bool robots = true;                    // the robot stage (verified only with a robot model installed)
+  bool robots = true;                    // the robot stage (runs only with a robot model installed)
   RobotParams robot{};
   // Colour: adaptive (the field's colour estimated from each frame, the table as fallback when
   // none is found) or the static table always (field_colour.hpp).
@@ -62,7 +62,7 @@ struct VisionConfig {
   // classified, scan lines twice as far apart, half the trials; 2 = least. The HOG classifiers go
   // first: fewer candidates classified at level 1, none at level 2.
   std::array<DegradeProfile, kDegradeLevels> degrade{{
-      {1, 3, -1, -1, 4, -1, -1, 4, 2},
+      {1, 3, -1, -1, 4, -1, -1, 3, 1},
       {2, 4, 15, 6, 6, 5, 20, 2, 1},
       {2, 8, 8, 4, 8, 3, 10, 0, 0},
   }};
