@@ -18,27 +18,17 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ringlet/sim_hal/camera_renderer.hpp"
+#include "run_command.hpp"
 
 namespace ringlet {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CalibrateRun {
-  int rc = -1;
-  std::string out;  // stdout and stderr
-};
+using CalibrateRun = test::CommandRun;
 
 CalibrateRun calibrate(const std::string& args) {
-  CalibrateRun r;
-  FILE* pipe = ::popen((std::string(RINGLET_VISION_CALIBRATE_BIN) + " " + args + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return r;
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return test::run_command(std::string(RINGLET_VISION_CALIBRATE_BIN) + " " + args + " 2>&1");
 }
 
 class CalibrateCli : public ::testing::Test {

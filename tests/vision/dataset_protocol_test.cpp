@@ -17,26 +17,15 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "run_command.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ToolRun {
-  int rc = -1;
-  std::string out;  // stdout and stderr
-};
+using ToolRun = ringlet::test::CommandRun;
 
-ToolRun run(const std::string& command) {
-  ToolRun r;
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return r;
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+ToolRun run(const std::string& command) { return ringlet::test::run_command(command + " 2>&1"); }
 
 /// The decoded picture's bytes (not the file's: the same picture must match however it was
 /// encoded), keyed by the file name.

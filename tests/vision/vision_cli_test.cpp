@@ -23,32 +23,22 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ringlet/sim_hal/camera_renderer.hpp"
+#include "run_command.hpp"
 
 namespace ringlet {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ToolRun {
-  int rc = -1;
-  std::string out;
-};
+using ToolRun = test::CommandRun;
 
 enum class Capture { kStdout, kBoth, kStderr };
 
 /// Runs ringlet-vision; `out` is what `capture` says (stdout; stdout and stderr; stderr only).
 ToolRun run_capturing(const std::string& args, Capture capture) {
-  ToolRun r;
   const char* redirect = capture == Capture::kStdout ? " 2>/dev/null" : capture == Capture::kBoth ? " 2>&1" : " 2>&1 >/dev/null";
   const std::string command = std::string(RINGLET_VISION_BIN) + " " + args + redirect;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return r;
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  r.rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return test::run_command(command);
 }
 
 /// Runs ringlet-vision; `out` is stdout, or stdout and stderr with `with_stderr`.
