@@ -50,12 +50,12 @@ TEST(NoAllocation, CameraAndVisionAllocateNothingEither) {
   std::uint64_t allocations = 0;
   {
     AllocationCounter counter;
-    exec.run(600);
+    exec.run(300);  // 100 camera frames: kept short, it runs under qemu in the aarch64 stage
     allocations = counter.count();
   }
   EXPECT_EQ(allocations, 0U) << "operator new was called while the camera and vision ran";
   ASSERT_NE(stack.telemetry().vision(), nullptr);
-  EXPECT_GT(stack.telemetry().vision()->frames, 190U);
+  EXPECT_GT(stack.telemetry().vision()->frames, 95U);
   EXPECT_GT(stack.telemetry().vision()->lines, 0U);
 }
 

@@ -23,6 +23,7 @@
 #include "ringlet/firmware/stack.hpp"
 #include "ringlet/hal/read_file.hpp"
 #include "ringlet/sim_hal/world.hpp"
+#include "temp_dir.hpp"
 
 namespace ringlet::firmware {
 namespace {
@@ -44,22 +45,7 @@ std::string error_of(F&& f) {
   return "(no error)";
 }
 
-// A fresh folder per test, removed afterwards.
-class TempFolder {
- public:
-  TempFolder() {
-    std::string pattern = (fs::temp_directory_path() / "ringlet_bad_input_XXXXXX").string();
-    path_ = ::mkdtemp(pattern.data());
-  }
-  ~TempFolder() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  [[nodiscard]] const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using ringlet::test::TempDir;
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p);
@@ -158,7 +144,7 @@ TEST(InputFiles, ConfigThatIsADeviceIsNotRead) {
 }
 
 TEST(InputFiles, ConfigThatIsAFifoDoesNotBlock) {
-  TempFolder dir;
+  TempDir dir;
   const fs::path fifo = dir.path() / "config.toml";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   auto result = std::async(std::launch::async, [&] { return error_of<ConfigError>([&] { (void)load_config(fifo); }); });
@@ -167,7 +153,7 @@ TEST(InputFiles, ConfigThatIsAFifoDoesNotBlock) {
 }
 
 TEST(InputFiles, ConfigLargerThanTheLimitIsRefused) {
-  TempFolder dir;
+  TempDir dir;
   const fs::path big = dir.path() / "big.toml";
   {
     std::ofstream out(big);
@@ -270,7 +256,7 @@ TEST(OutputFile, MissingFolderIsRefusedBeforeAnythingRuns) {
 }
 
 TEST(OutputFile, DirectoryOrDeviceIsRefused) {
-  TempFolder dir;
+  TempDir dir;
   EXPECT_EQ(error_of<OutputError>([&] { PendingOutput out(dir.path(), "--svg", "the picture"); }),
             "--svg " + dir.path().string() + ": cannot write the picture: the path is a directory, not a file");
   EXPECT_EQ(error_of<OutputError>([] { PendingOutput out("/dev/null", "--svg", "the picture"); }),
@@ -280,7 +266,7 @@ TEST(OutputFile, DirectoryOrDeviceIsRefused) {
 }
 
 TEST(OutputFile, WrittenWholeAtCommitAndTheOldFileKeptUntilThen) {
-  TempFolder dir;
+  TempDir dir;
   const fs::path target = dir.path() / "report.json";
   {
     std::ofstream(target) << "old";
@@ -298,13 +284,13 @@ TEST(OutputFile, WrittenWholeAtCommitAndTheOldFileKeptUntilThen) {
 }
 
 TEST(OutputFile, AnAbandonedOutputLeavesNothingBehind) {
-  TempFolder dir;
+  TempDir dir;
   { PendingOutput out(dir.path() / "run.svg", "--svg", "the picture"); }
   EXPECT_TRUE(fs::is_empty(dir.path()));
 }
 
 TEST(OutputFile, AFailedCommitNamesThePathAndLeavesTheTargetAlone) {
-  TempFolder dir;
+  TempDir dir;
   const fs::path folder = dir.path() / "vanishing";
   fs::create_directory(folder);
   PendingOutput out(folder / "report.json", "--report", "the report");

@@ -139,8 +139,8 @@ TEST(FirmwareVision, LinesAndBallAreDetectedAndTheHeadFollowsTheDetectedBall) {
 }
 
 TEST(FirmwareVision, SameSeedSameRunWithTheCamera) {
-  const auto a = run(spl(3.0));
-  const auto b = run(spl(3.0));
+  const auto a = run(spl(2.0));
+  const auto b = run(spl(2.0));
   EXPECT_EQ(a.summary.trajectory_hash, b.summary.trajectory_hash);
   ASSERT_TRUE(a.summary.vision && b.summary.vision);
   EXPECT_EQ(a.summary.vision->lines, b.summary.vision->lines);

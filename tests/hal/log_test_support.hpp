@@ -11,13 +11,14 @@
 #include <vector>
 
 #include "ringlet/hal/sensors.hpp"
+#include "temp_dir.hpp"
 
 namespace ringlet::hal::test {
 
+// One folder per test process, removed when it exits.
 inline std::filesystem::path log_dir() {
-  auto dir = std::filesystem::temp_directory_path() / ("ringlet_hal_log_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return dir;
+  static const ringlet::test::TempDir dir("ringlet_hal_log");
+  return dir.path();
 }
 
 inline std::vector<std::uint8_t> file_bytes(const std::filesystem::path& p) {

@@ -17,26 +17,14 @@
 #include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/hal/opencv_camera.hpp"
 #include "ringlet/hal/yuv.hpp"
+#include "temp_dir.hpp"
 
 namespace ringlet::hal {
 namespace {
 
 namespace fs = std::filesystem;
 
-class TempDir {
- public:
-  TempDir() : path_(fs::temp_directory_path() / ("ringlet-camera-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++))) {
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  [[nodiscard]] const fs::path& path() const { return path_; }
-
- private:
-  static inline int counter_ = 0;
-  fs::path path_;
-};
+using ringlet::test::TempDir;
 
 // Frame i: a gradient whose blue channel encodes i, so frames and pixels are told apart.
 cv::Mat frame(int i, int width = 64, int height = 48) {

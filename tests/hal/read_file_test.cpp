@@ -8,15 +8,17 @@
 #include <filesystem>
 #include <fstream>
 
+#include "temp_dir.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 using ringlet::hal::read_file;
 
+// One folder per test process, removed when it exits.
 fs::path temp_dir() {
-  auto dir = fs::temp_directory_path() / ("ringlet_read_file_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
+  static const ringlet::test::TempDir dir("ringlet_read_file");
+  return dir.path();
 }
 
 TEST(ReadFile, ReadsARegularFileWhole) {

@@ -12,6 +12,7 @@
 #include "ringlet/vision/hog_svm.hpp"
 #include "ringlet/vision/prng.hpp"
 #include "ringlet/vision/resample.hpp"
+#include "temp_dir.hpp"
 
 namespace ringlet::vision {
 namespace {
@@ -32,7 +33,8 @@ std::string parse_error(const std::vector<std::uint8_t>& bytes) {
 TEST(HogSvm, RoundTripThroughAFile) {
   const HogSvm m = make_model(HogTarget::kRobot, HogParams::robot());
   ASSERT_EQ(m.validate(), "");
-  const auto path = std::filesystem::temp_directory_path() / "ringlet_hog_svm_roundtrip.hog";
+  const ringlet::test::TempDir tmp("ringlet_hog_svm");
+  const auto path = tmp / "roundtrip.hog";
   ASSERT_EQ(m.save(path), "");
   const HogSvmLoad l = HogSvm::load(path);
   ASSERT_TRUE(l.model.has_value()) << l.error;
@@ -40,7 +42,6 @@ TEST(HogSvm, RoundTripThroughAFile) {
   EXPECT_EQ(l.model->target(), HogTarget::kRobot);
   EXPECT_EQ(l.model->params(), HogParams::robot());
   EXPECT_EQ(std::filesystem::file_size(path), HogSvm::kHeaderSize + 4 * 756 + 4);
-  std::filesystem::remove(path);
 }
 
 TEST(HogSvm, ScoreIsDotProductPlusBias) {

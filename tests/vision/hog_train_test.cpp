@@ -12,6 +12,7 @@
 
 #include "ringlet/vision/hog_svm.hpp"
 #include "samples.hpp"
+#include "temp_dir.hpp"
 #include "trainer.hpp"
 #include "vision_io.hpp"
 
@@ -34,11 +35,11 @@ void round_trip(HogTarget target) {
   const auto frames = synthetic_frames(target, 5, 60);
   const TrainResult r = train_hog(frames, {}, small_config(target));
   ASSERT_TRUE(r.svm);
-  const auto path = std::filesystem::temp_directory_path() / ("ringlet_hog_train_" + std::string(to_string(target)) + ".hog");
+  const ringlet::test::TempDir tmp("ringlet_hog_train");
+  const auto path = tmp / (std::string(to_string(target)) + ".hog");
   ASSERT_EQ(r.model.save(path), "");
   const HogSvmLoad loaded = HogSvm::load(path);
   ASSERT_TRUE(loaded.model.has_value()) << loaded.error;
-  std::filesystem::remove(path);
   const HogSvm& model = *loaded.model;
   HogClassifier ours(model);
 
@@ -92,12 +93,6 @@ TEST(HogTrain, SameSeedSameModel) {
 
 class DatasetDir : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / "ringlet_hog_dataset_test";
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
   void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
   std::string error(HogTarget t) {
     try {
@@ -107,7 +102,8 @@ class DatasetDir : public ::testing::Test {
     }
     return "";
   }
-  std::filesystem::path dir_;
+  ringlet::test::TempDir tmp_{"ringlet_hog_dataset"};
+  const std::filesystem::path& dir_ = tmp_.path();
 };
 
 TEST_F(DatasetDir, NamesTheFileAndTheMissingField) {

@@ -14,16 +14,17 @@
 #include <vector>
 
 #include "ringlet/whiteboard/whiteboard.hpp"
+#include "temp_dir.hpp"
 
 namespace {
 
 using namespace ringlet::wb;
 namespace fs = std::filesystem;
 
+// One folder per test process, removed when it exits.
 fs::path dir() {
-  auto d = fs::temp_directory_path() / ("ringlet_wb_log_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
+  static const ringlet::test::TempDir d("ringlet_wb_log");
+  return d.path();
 }
 
 std::vector<char> bytes_of(const fs::path& p) {
