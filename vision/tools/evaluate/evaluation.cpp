@@ -152,6 +152,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
   }
   report.tune_frames = tune.size();
   report.report_frames = test.size();
+  for (const fs::path& p : test) report.test_frames.push_back(p.filename().string());
   report.frames_total = tune.size() + test.size();
   const ColourTable table = tools::load_table(o.lut);
   std::optional<HogSvm> ball_model, robot_model;
@@ -224,6 +225,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
       }
     }
     const hal::FrameView view = yuyv_view(f);
+    pipeline->forget_history();  // the test frames are unrelated pictures, not a video
     const auto start = Clock::now();
     const VisionResult& result = pipeline->process(view, f.meta.head);
     report.ringlet.time_ms.push_back(elapsed_ms(start));
@@ -234,7 +236,9 @@ EvalReport run_evaluation(const EvalOptions& o) {
       segments.push_back({line.image_start.u, line.image_start.v, line.image_end.u, line.image_end.v});
     }
     report.ringlet.raw_detections += segments.size();
-    report.ringlet.counts += match_segments(segments, f.meta.lines, o.match);
+    report.ringlet.per_frame.push_back(match_segments(segments, f.meta.lines, o.match));
+    report.ringlet.segments.push_back(segments);
+    report.ringlet.counts += report.ringlet.per_frame.back();
     report.circle += score_circle({result.circle.seen, result.circle.centre, result.circle.radius_m}, f.meta.rings,
                                   o.circle_match);
     std::vector<RingImage> rings;
@@ -269,7 +273,9 @@ EvalReport run_evaluation(const EvalOptions& o) {
     const HoughRun h = run_hough(f, report.hough, margin);
     report.baseline.time_ms.push_back(h.ms);
     report.baseline.raw_detections += h.segments.size();
-    report.baseline.counts += match_segments(h.segments, f.meta.lines, o.match);
+    report.baseline.per_frame.push_back(match_segments(h.segments, f.meta.lines, o.match));
+    report.baseline.segments.push_back(h.segments);
+    report.baseline.counts += report.baseline.per_frame.back();
     count_arcs(report.baseline, h.segments);
     if (o.progress) o.progress("evaluating", i + 1, report.report_frames);
   }

@@ -54,6 +54,8 @@ struct DetectorReport {
   std::size_t arc_false_positives = 0;  // of the scored false positives: pieces of the centre circle
   std::size_t frames_with_arc_false_positives = 0;
   std::vector<double> time_ms;      // per frame
+  std::vector<MatchCounts> per_frame;  // line counts per test frame (which frames fail)
+  std::vector<std::vector<Segment2>> segments;  // what was reported, per test frame
   [[nodiscard]] double median_ms() const;
   [[nodiscard]] double p99_ms() const;
   [[nodiscard]] double mean_ms() const;
@@ -70,6 +72,7 @@ struct EvalReport {
   std::string test_set;                 // FrameSet::describe() of each
   std::string tuning_set;               // empty: no tuning
   std::vector<std::string> excluded_sets;
+  std::vector<std::string> test_frames;  // file names of the reported frames, in order
   std::string disjointness;             // what was checked, in words
   std::size_t frames_total = 0;
   std::size_t tune_frames = 0;      // frames Hough was tuned on (none of them reported on)

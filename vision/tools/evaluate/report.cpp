@@ -32,7 +32,19 @@ std::string xml_escape(const std::string& text) {
 
 nlohmann::json detector_json(const DetectorReport& d) {
   const MatchCounts& c = d.counts;
+  // Per test frame, in the order of "test_frames": [truths, recalled, detections, true positives].
+  nlohmann::json per_frame = nlohmann::json::array();
+  for (const MatchCounts& f : d.per_frame) per_frame.push_back({f.truths, f.recalled, f.detections, f.true_positives});
+  // The reported segments per test frame, [x0, y0, x1, y1] in pixels (to draw or re-score).
+  nlohmann::json segments = nlohmann::json::array();
+  for (const auto& frame : d.segments) {
+    nlohmann::json here = nlohmann::json::array();
+    for (const Segment2& s : frame) here.push_back({s.x0, s.y0, s.x1, s.y1});
+    segments.push_back(std::move(here));
+  }
   return {{"name", d.name},
+          {"per_frame_lines", per_frame},
+          {"per_frame_segments", segments},
           {"precision", c.precision()},
           {"recall", c.recall()},
           {"f1", c.f1()},
@@ -154,6 +166,7 @@ nlohmann::json report_json(const EvalReport& r) {
           {"frames_total", r.frames_total},
           {"tune_frames", r.tune_frames},
           {"report_frames", r.report_frames},
+          {"test_frames", r.test_frames},
           {"protocol", "Hough parameters chosen by best F1 on the tuning set; both detectors scored on the test set "
                        "only, which was checked to share no frame (seed and index, or pixels) with the tuning set "
                        "and the excluded sets; each detector timed alone with steady_clock, one thread"},

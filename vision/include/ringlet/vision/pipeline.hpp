@@ -136,6 +136,10 @@ class VisionPipeline {
     return target == HogTarget::kBall ? ball_svm_.has_value() : robot_svm_.has_value();
   }
 
+  /// The next frame is an independent picture (a test set, a folder of photos): nothing of the
+  /// frames before it (the smoothed and held field colour) may shape how it is classified.
+  void forget_history() noexcept { field_colour_.forget(); }
+
   [[nodiscard]] const VisionResult& result() const noexcept { return result_; }
   [[nodiscard]] const ClassImage& classes() const noexcept { return classes_; }
   [[nodiscard]] const CandidateBuffer& candidates() const noexcept { return candidates_; }
