@@ -67,6 +67,29 @@ TEST(SegmentMatch, AWideLineAcceptsItsBordersAsWellAsItsCentre) {
   EXPECT_EQ(match_segments(border, thin).true_positives, 0U);
 }
 
+TEST(SegmentMatch, AFitThroughAnOccluderMatchesTheMarkingAndRecallsItsPieces) {
+  // One painted line hidden by the ball between x = 40 and 60: two pieces of marking 3, and a
+  // short piece of another marking (7) beyond its end, on the same straight line.
+  const std::vector<TruthSegment> truth{
+      {{0, 0, 40, 0}, 1.0, 3}, {{60, 0, 100, 0}, 1.0, 3}, {{130, 0, 200, 0}, 1.0, 7}};
+  const std::vector<Segment2> through{{0, 1, 100, 1}};
+  auto c = match_segments(through, truth);
+  EXPECT_EQ(c.detections, 1U);
+  EXPECT_EQ(c.true_positives, 1U);
+  EXPECT_EQ(c.truths, 3U);
+  EXPECT_EQ(c.recalled, 2U) << "both pieces of marking 3, not marking 7";
+  // Reaching on to the next marking is reaching past this line's visible end: no match.
+  const std::vector<Segment2> too_long{{0, 0, 200, 0}};
+  c = match_segments(too_long, truth);
+  EXPECT_EQ(c.true_positives, 0U);
+  EXPECT_EQ(c.recalled, 0U);
+  // Without markings (-1) every piece stands alone, as before: the fit through the ball misses both.
+  std::vector<TruthSegment> unmarked = truth;
+  for (TruthSegment& t : unmarked) t.marking = -1;
+  c = match_segments(through, unmarked);
+  EXPECT_EQ(c.true_positives, 0U);
+}
+
 TEST(SegmentMatch, CountsAddUp) {
   MatchCounts a;
   a.detections = 2;

@@ -71,6 +71,7 @@ DatasetFrame load_dataset_frame(const fs::path& json_path) {
       const auto& img = line.at("image");
       const auto& ground = line.at("ground");
       TruthSegment t;
+      t.marking = line.value("marking", -1);
       t.line = {img.at(0).at(0).get<double>(), img.at(0).at(1).get<double>(), img.at(1).at(0).get<double>(),
                 img.at(1).at(1).get<double>()};
       const hal::RobotPoint a{ground.at(0).at(0).get<double>(), ground.at(0).at(1).get<double>()};

@@ -95,35 +95,80 @@ double MatchCounts::mean_extent_error_px() const noexcept {
 
 MatchCounts match_segments(std::span<const Segment2> detected, std::span<const TruthSegment> truth,
                            const MatchParams& params) {
+  // The markings: pieces of one painted line, and the visible extent they span.
+  struct Marking {
+    Segment2 extent{};
+    double half_width_px = 0.0;
+    bool cares = false;  // some piece is long enough to be scored
+    std::vector<std::size_t> pieces;
+  };
+  std::vector<Marking> markings;
+  std::vector<int> marking_ids;
+  for (std::size_t t = 0; t < truth.size(); ++t) {
+    const int id = truth[t].marking;
+    std::size_t m = markings.size();
+    if (id >= 0) {
+      const auto it = std::find(marking_ids.begin(), marking_ids.end(), id);
+      if (it != marking_ids.end()) m = static_cast<std::size_t>(it - marking_ids.begin());
+    }
+    if (m == markings.size()) {
+      markings.emplace_back();
+      marking_ids.push_back(id);
+    }
+    markings[m].pieces.push_back(t);
+    markings[m].half_width_px = std::max(markings[m].half_width_px, truth[t].half_width_px);
+    markings[m].cares = markings[m].cares || length(truth[t].line) >= params.min_truth_length_px;
+  }
+  for (Marking& m : markings) {
+    // The two farthest-apart piece ends.
+    std::vector<std::pair<double, double>> ends;
+    for (const std::size_t t : m.pieces) {
+      ends.emplace_back(truth[t].line.x0, truth[t].line.y0);
+      ends.emplace_back(truth[t].line.x1, truth[t].line.y1);
+    }
+    double widest = -1.0;
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+      for (std::size_t j = i + 1; j < ends.size(); ++j) {
+        const double d = std::hypot(ends[i].first - ends[j].first, ends[i].second - ends[j].second);
+        if (d > widest) {
+          widest = d;
+          m.extent = {ends[i].first, ends[i].second, ends[j].first, ends[j].second};
+        }
+      }
+    }
+  }
+
   MatchCounts counts;
   std::vector<std::vector<std::pair<double, double>>> cover(truth.size());
   for (const auto& d : detected) {
-    // The best matching true segment: smallest mean endpoint distance among those that match.
-    std::size_t best = truth.size();
+    // The best matching marking: smallest mean endpoint distance among those that match.
+    std::size_t best = markings.size();
     double best_distance = 0.0;
-    for (std::size_t t = 0; t < truth.size(); ++t) {
-      const Segment2& line = truth[t].line;
+    for (std::size_t m = 0; m < markings.size(); ++m) {
+      const Segment2& line = markings[m].extent;
       const double e0 = distance_to_segment(line, d.x0, d.y0);
       const double e1 = distance_to_segment(line, d.x1, d.y1);
-      const double tolerance = params.max_distance_px + truth[t].half_width_px;
+      const double tolerance = params.max_distance_px + markings[m].half_width_px;
       if (e0 > tolerance || e1 > tolerance) continue;
       if (acute_angle_deg(d, line) > params.max_angle_deg) continue;
       const double mean = (e0 + e1) / 2.0;
-      if (best == truth.size() || mean < best_distance) {
-        best = t;
+      if (best == markings.size() || mean < best_distance) {
+        best = m;
         best_distance = mean;
       }
     }
-    if (best == truth.size()) {
+    if (best == markings.size()) {
       ++counts.detections;  // matches nothing: a false positive
       continue;
     }
-    const Segment2& t = truth[best].line;
-    cover[best].emplace_back(along(t, d.x0, d.y0), along(t, d.x1, d.y1));
-    if (length(t) < params.min_truth_length_px) continue;  // don't care
+    for (const std::size_t t : markings[best].pieces) {
+      const Segment2& piece = truth[t].line;
+      cover[t].emplace_back(along(piece, d.x0, d.y0), along(piece, d.x1, d.y1));
+    }
+    if (!markings[best].cares) continue;  // don't care
     ++counts.detections;
     ++counts.true_positives;
-    counts.angle_error_sum_deg += acute_angle_deg(d, t);
+    counts.angle_error_sum_deg += acute_angle_deg(d, markings[best].extent);
     counts.endpoint_error_sum_px += best_distance;
   }
   for (std::size_t i = 0; i < truth.size(); ++i) {

@@ -2,11 +2,15 @@
 // How detected line segments are scored against ground truth, the same way for every detector
 // (Ringlet's RANSAC pipeline and Canny + HoughLinesP), in image coordinates (pixels):
 //
-//   A detection MATCHES a true segment when the acute angle between them is at most
+//   A painted line seen past an occluder (the ball, a robot's legs, a goal post) is several true
+//   segments of one marking; the marking's VISIBLE EXTENT is the segment between its two farthest
+//   visible ends. A detection MATCHES a marking when the acute angle to that extent is at most
 //   max_angle_deg and both of its endpoints lie within max_distance_px plus the line's half width
 //   in the image (a painted line is a band: an edge detector finds its borders, a centre-line
-//   detector its middle; both are right) of the true segment's centre line.
-//   Precision: detections that match some true segment / all detections.
+//   detector its middle; both are right) of it: a fit straight through the ball is the same line,
+//   not a false positive. (Segments without a marking, -1, are markings of their own.)
+//   Its projection then covers each of the marking's true segments.
+//   Precision: detections that match some marking / all detections.
 //   Recall: true segments whose length is covered to at least min_coverage by the projections of
 //   the detections matching them / all true segments. Several fragments may cover one segment;
 //   fragments are not punished in precision, but only coverage earns recall.
@@ -32,6 +36,7 @@ struct Segment2 {
 struct TruthSegment {
   Segment2 line{};
   double half_width_px = 0.0;
+  int marking = -1;  // which painted line this piece belongs to (ringlet-dataset "marking"); -1: unknown
 };
 
 struct MatchParams {
