@@ -144,8 +144,9 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
   if (scanned && may_run(Stage::kRansac)) {
     LineSet lines;
     const CentreCircle known = r.circle;
+    const LineCheck check(classes_, k, pose, config_.line_check);
     ransac_.find(candidates_.points(), frame.sequence, k, pose, deadline, lines, level.max_trials, level.max_lines,
-                 level.ransac_skip, level.scan_stride, &known);
+                 level.ransac_skip, level.scan_stride, &known, &check);
     r.lines = lines.lines;
     r.line_count = lines.count;
     r.circle = lines.circle;

@@ -46,7 +46,8 @@ void RansacLineFinder::remove_from_pool(std::span<const int> members) noexcept {
 
 void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
                             const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials,
-                            int max_lines, int skip_override, int scan_stride, const CentreCircle* circle) noexcept {
+                            int max_lines, int skip_override, int scan_stride, const CentreCircle* circle,
+                            const LineCheck* check) noexcept {
   out.count = 0;
   out.circle = circle != nullptr && circle->seen ? *circle : CentreCircle{};
   out.stats = RansacStats{};
@@ -138,12 +139,12 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
       }
     }
     ++rounds;
-    if (add_pieces(line, k, pose, std::max(scan_stride, 1), out)) ++st.lines_extracted;
+    if (add_pieces(line, k, pose, std::max(scan_stride, 1), check, out)) ++st.lines_extracted;
     remove_from_pool(s.inliers_);
     if (st.stopped_early) break;
   }
   if (st.stopped_early) st.points_left = static_cast<int>(s.pool_.size());
-  merge(out, k, pose);
+  merge(out, k, pose, check);
 }
 
 bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept {
@@ -255,7 +256,7 @@ bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece,
 }
 
 bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
-                                  int scan_stride, LineSet& out) noexcept {
+                                  int scan_stride, const LineCheck* check, LineSet& out) noexcept {
   auto& s = scratch_;
   s.order_.clear();
   for (const int p : s.inliers_) s.order_.emplace_back(line.along(s.points_[static_cast<std::size_t>(p)]), p);
@@ -285,6 +286,12 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
       ++out.stats.sparse_rejected;
       return;
     }
+    // The picture must show paint along it (a fit through a few true points and robots' feet
+    // would not).
+    if (check != nullptr && !check->accepts(g0, g1)) {
+      ++out.stats.check_rejected;
+      return;
+    }
     any = true;
     FieldLine& f = out.lines[out.count++];
     f.ground_start = g0;
@@ -304,7 +311,8 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
   return any;
 }
 
-void RansacLineFinder::merge(LineSet& out, const hal::CameraIntrinsics& k, const hal::CameraPose& pose) const noexcept {
+void RansacLineFinder::merge(LineSet& out, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+                             const LineCheck* check) const noexcept {
   const double cos_max = std::cos(params_.merge_angle_deg * std::numbers::pi / 180.0);
   const auto as_line = [](const FieldLine& f) {
     const double len = std::max(f.length_m, 1e-9);
@@ -340,6 +348,9 @@ void RansacLineFinder::merge(LineSet& out, const hal::CameraIntrinsics& k, const
         FieldLine m = fa;
         m.ground_start = base.at(t_min);
         m.ground_end = base.at(t_max);
+        // Two pieces in line across a robot's feet are not one painted line: the whole must look
+        // like paint too (a line behind the ball still does).
+        if (check != nullptr && !check->accepts(m.ground_start, m.ground_end)) continue;
         m.length_m = t_max - t_min;
         m.inliers = fa.inliers + fb.inliers;
         if (const auto p0 = hal::project(k, pose, {m.ground_start.x, m.ground_start.y, 0.0})) m.image_start = *p0;

@@ -60,11 +60,11 @@ struct AdaptiveColourParams {
   // field's chroma in [cone_t_min, cone_t_max] (shade and sun scale chroma with brightness) and
   // distance from that ray ≤ tolerance + cone_slope·t·|field chroma|.
   int chroma_tolerance_min = 8;
-  int chroma_tolerance_max = 24;
-  double chroma_tolerance_k = 3.0;
+  int chroma_tolerance_max = 12;
+  double chroma_tolerance_k = 2.0;
   double cone_t_min = 0.35;
   double cone_t_max = 2.5;
-  double cone_slope = 0.35;
+  double cone_slope = 0.2;
   int field_y_below = 80;             // field: Y ≥ local field Y − max(this, k·spread) (no upper
   double field_y_k = 3.0;             // bound: bright, saturated carpet is sunlit field, not line)
   int line_margin = 28;               // line: Y ≥ local field Y + max(line_margin, k·spread, ratio·Y)

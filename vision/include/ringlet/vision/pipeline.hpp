@@ -50,6 +50,7 @@ struct VisionConfig {
   std::size_t max_candidates = 4096;
   ScanParams scan{};
   RansacParams ransac{};
+  LineCheckParams line_check{};          // every piece RANSAC fits is checked against the picture
   BallParams ball{};                     // ball.mode picks the orange or the black-and-white detector
   BwBallParams bw_ball{};
   bool robots = true;                    // the robot stage (runs only with a robot model installed)

@@ -15,6 +15,7 @@
 #include "ringlet/vision/centre_circle.hpp"
 #include "ringlet/vision/deadline.hpp"
 #include "ringlet/vision/fit.hpp"
+#include "ringlet/vision/line_check.hpp"
 #include "ringlet/vision/scan_points.hpp"
 
 namespace ringlet::vision {
@@ -65,6 +66,7 @@ struct RansacStats {
   int points_in = 0;             // candidates offered
   int points_used = 0;           // the first round's sample (every skip-th candidate)
   int sparse_rejected = 0;       // pieces with too little support for their image length
+  int check_rejected = 0;        // pieces the picture does not show as paint (LineCheck)
   int trials_run = 0;
   int trials_skipped = 0;        // cut by the deadline
   int lines_extracted = 0;       // extraction rounds that produced a segment (before merging)
@@ -114,7 +116,8 @@ class RansacLineFinder {
   /// and the rounds find one themselves).
   void find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
             const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials = -1,
-            int max_lines = -1, int skip = -1, int scan_stride = 3, const CentreCircle* circle = nullptr) noexcept;
+            int max_lines = -1, int skip = -1, int scan_stride = 3, const CentreCircle* circle = nullptr,
+            const LineCheck* check = nullptr) noexcept;
 
   [[nodiscard]] const RansacParams& params() const noexcept { return params_; }
 
@@ -124,8 +127,8 @@ class RansacLineFinder {
   bool try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept;
   /// Emits the line's gap-free pieces (arcs go to the circle instead); true if any was emitted.
   bool add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose, int scan_stride,
-                  LineSet& out) noexcept;
-  void merge(LineSet& out, const hal::CameraIntrinsics& k, const hal::CameraPose& pose) const noexcept;
+                  const LineCheck* check, LineSet& out) noexcept;
+  void merge(LineSet& out, const hal::CameraIntrinsics& k, const hal::CameraPose& pose, const LineCheck* check) const noexcept;
   void remove_from_pool(std::span<const int> members) noexcept;
 
   RansacParams params_;

@@ -1,0 +1,77 @@
+// LineCheck: a fitted piece is kept only where the classified picture shows paint with field on
+// both sides (vision/include/ringlet/vision/line_check.hpp).
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "ringlet/vision/class_image.hpp"
+#include "ringlet/vision/colour_table.hpp"
+#include "ringlet/vision/horizon.hpp"
+#include "ringlet/vision/line_check.hpp"
+#include "synthetic_field.hpp"
+
+namespace ringlet::vision {
+namespace {
+
+using testing::Camera;
+
+// Classifies `scene` as the camera sees it and asks the checker about the ground segment [a, b].
+double share(const testing::Scene& scene, hal::RobotPoint a, hal::RobotPoint b, int step = 1,
+             const LineCheckParams& params = {}) {
+  const Camera cam;
+  const auto f = testing::render(scene, cam, hal::PixelFormat::kYuyv);
+  std::vector<int> rows(640);
+  const int first = horizon_rows(cam.k, cam.pose(), 2, rows);
+  ClassImage classes(640, 480);
+  EXPECT_TRUE(classes.classify(f.view, ColourTable::from_thresholds({}), first, step));
+  const hal::CameraPose pose = cam.pose();
+  return LineCheck(classes, cam.k, pose, params).share(a, b);
+}
+
+testing::Scene one_line() {
+  testing::Scene scene;
+  scene.lines = {{{1.5, -2.0}, {1.5, 2.0}}};  // across the view, 1.5 m ahead
+  return scene;
+}
+
+TEST(LineCheck, APaintedLinePassesAllAlongIt) {
+  EXPECT_DOUBLE_EQ(share(one_line(), {1.5, -0.8}, {1.5, 0.8}), 1.0);
+  EXPECT_DOUBLE_EQ(share(one_line(), {1.5, -0.8}, {1.5, 0.8}, 2), 1.0) << "on the coarser class grid too";
+  // A fit a centimetre off the paint is still on it.
+  EXPECT_DOUBLE_EQ(share(one_line(), {1.51, -0.8}, {1.51, 0.8}), 1.0);
+}
+
+TEST(LineCheck, AFitAcrossPlainGreenFails) {
+  EXPECT_LE(share(one_line(), {1.0, -0.5}, {2.2, 0.5}), 0.2) << "crosses the line once, green elsewhere";
+  EXPECT_DOUBLE_EQ(share(one_line(), {1.2, -0.8}, {1.2, 0.8}), 0.0) << "parallel to the paint, 30 cm before it";
+}
+
+TEST(LineCheck, AWhiteBlobIsNoLine) {
+  // A robot's feet: a white box half a metre wide, its long side along the "line".
+  testing::Scene scene;
+  scene.blobs = {{{1.4, -0.3}, {1.9, 0.3}}};
+  EXPECT_LT(share(scene, {1.65, -0.25}, {1.65, 0.25}), 0.5) << "paint, but far too wide";
+}
+
+TEST(LineCheck, ALineHalfHiddenByTheBallStillPasses) {
+  testing::Scene scene = one_line();
+  scene.ball = hal::RobotPoint{1.5, 0.0};
+  scene.ball_radius = 0.1;
+  const double s = share(scene, {1.5, -0.4}, {1.5, 0.4});
+  EXPECT_GE(s, 0.5);
+  EXPECT_LT(s, 1.0) << "the samples behind the ball do not look like paint";
+}
+
+TEST(LineCheck, OffOrOutOfThePictureIsNotJudged) {
+  LineCheckParams off;
+  off.enabled = false;
+  const Camera cam;
+  const ClassImage classes(640, 480);
+  const hal::CameraPose pose = cam.pose();
+  EXPECT_TRUE(LineCheck(classes, cam.k, pose, off).accepts({1.0, -0.5}, {2.2, 0.5})) << "disabled: accepts all";
+  // Behind the camera: no sample inside the picture, so too few to judge: kept.
+  EXPECT_DOUBLE_EQ(share(one_line(), {-2.0, -0.5}, {-2.0, 0.5}), 1.0);
+}
+
+}  // namespace
+}  // namespace ringlet::vision

@@ -1,0 +1,97 @@
+// A fitted piece checked against the class image (line_check.hpp).
+#include "ringlet/vision/line_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ringlet::vision {
+
+ColourClass LineCheck::class_at(double x, double y) const noexcept {
+  const int s = classes_.step();
+  const int xi = static_cast<int>(std::floor(x));
+  const int yi = static_cast<int>(std::floor(y));
+  if (xi < 0 || xi >= classes_.width() || yi < classes_.first_row() || yi >= classes_.height()) return ColourClass::kOther;
+  const int gx = xi / s * s;
+  const int gy = classes_.first_row() + (yi - classes_.first_row()) / s * s;
+  return classes_.at(gx, gy);
+}
+
+bool LineCheck::looks_like_line(double cx, double cy, double nx, double ny, double h) const noexcept {
+  // The paint: a line pixel within half the band plus the slack of the fit.
+  const int reach = static_cast<int>(std::ceil(h + params_.centre_slack_px));
+  int centre = 0;
+  bool on_paint = false;
+  for (int d = 0; d <= reach && !on_paint; ++d) {
+    for (const int sign : {1, -1}) {
+      if (class_at(cx + sign * d * nx, cy + sign * d * ny) == ColourClass::kLine) {
+        centre = sign * d;
+        on_paint = true;
+        break;
+      }
+    }
+  }
+  if (!on_paint) return false;
+  // From there outwards on each side: the band ends within its allowed width, and the first
+  // thing after it (past a blurred edge) is field.
+  const int band = static_cast<int>(std::ceil(2.0 * h * params_.band_factor + params_.band_slack_px));
+  for (const int sign : {1, -1}) {
+    int d = centre;
+    int steps = 0;
+    while (steps <= band && class_at(cx + d * nx, cy + d * ny) == ColourClass::kLine) {
+      d += sign;
+      ++steps;
+    }
+    if (steps > band) return false;  // too wide for paint: a robot, a post, a white wall
+    bool field = false;
+    for (int e = 0; e <= params_.edge_px; ++e, d += sign) {
+      const ColourClass c = class_at(cx + d * nx, cy + d * ny);
+      if (c == ColourClass::kField) {
+        field = true;
+        break;
+      }
+      if (c == ColourClass::kLine) break;
+    }
+    if (!field) return false;
+  }
+  return true;
+}
+
+double LineCheck::share(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
+  const double gx = b.x - a.x, gy = b.y - a.y;
+  const double len = std::sqrt(gx * gx + gy * gy);
+  if (len < 1e-9) return 1.0;
+  // Half the painted width across the line, on the ground.
+  const double wx = -gy / len * params_.line_width_m / 2.0;
+  const double wy = gx / len * params_.line_width_m / 2.0;
+  const int n = std::max(params_.samples, 1);
+  int judged = 0;
+  int passed = 0;
+  for (int i = 0; i < n; ++i) {
+    const double t = (static_cast<double>(i) + 0.5) / static_cast<double>(n);
+    const double px = a.x + t * gx, py = a.y + t * gy;
+    const auto c = hal::project(k_, pose_, {px, py, 0.0});
+    const auto e = hal::project(k_, pose_, {px + wx, py + wy, 0.0});
+    if (!c || !e) continue;
+    if (c->u < 0.0 || c->u >= classes_.width() || c->v < classes_.first_row() || c->v >= classes_.height()) continue;
+    const double ex = e->u - c->u, ey = e->v - c->v;
+    const double h = std::sqrt(ex * ex + ey * ey);
+    // The normal in the picture: across the projected line, i.e. perpendicular to its image
+    // direction (the projected width vector is not perpendicular in a perspective view).
+    const auto c2 = hal::project(k_, pose_, {px + gx / len * 0.05, py + gy / len * 0.05, 0.0});
+    if (!c2) continue;
+    ++judged;
+    double dx = c2->u - c->u, dy = c2->v - c->v;
+    const double dl = std::sqrt(dx * dx + dy * dy);
+    if (dl < 1e-9) {
+      --judged;
+      continue;
+    }
+    dx /= dl;
+    dy /= dl;
+    if (looks_like_line(c->u, c->v, -dy, dx, std::max(h, 0.5))) ++passed;
+  }
+  if (judged < params_.min_judged) return 1.0;
+  return static_cast<double>(passed) / static_cast<double>(judged);
+}
+
+}  // namespace ringlet::vision
