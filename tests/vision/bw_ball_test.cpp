@@ -70,8 +70,16 @@ TEST(BwBall, RenderedBallGivesACandidateOfTheRightSize) {
 }
 
 // A robot drawn as a white column in the image, standing at a ground point: its foot row from the
-// camera model, its height the projected 0.574 m.
-TEST(Robots, ColumnStandingOnTheFieldIsFoundAtItsFoot) {
+// camera model, its height the projected 0.574 m. `half_width`: the column's half width as a share
+// of that height (a NAO: 0.25); 0: the white reaches across the whole picture.
+struct Column {
+  RobotList out;
+  hal::Pixel foot;
+  double height = 0.0;
+  hal::RobotPoint at{1.5, 0.2};
+};
+
+Column detect_column(double half_width) {
   Camera cam;
   const hal::CameraPose pose = cam.pose();
   testing::Scene scene;  // bare field
@@ -83,16 +91,18 @@ TEST(Robots, ColumnStandingOnTheFieldIsFoundAtItsFoot) {
   t.ball = {0, 0, 0, 0, 0, 0};
   const ColourTable table = ColourTable::from_thresholds(t);
   std::vector<std::uint8_t> img(static_cast<std::size_t>(cam.k.width * cam.k.height), 100);
-  const hal::RobotPoint at{1.5, 0.2};
+  Column c;
   RobotDetector d(RobotParams{});
-  const auto foot = hal::project(cam.k, pose, {at.x, at.y, 0.0});
-  ASSERT_TRUE(foot.has_value());
-  const double h = d.expected_height_px(cam.k, pose, at);
-  ASSERT_GT(h, 50.0);
+  const auto foot = hal::project(cam.k, pose, {c.at.x, c.at.y, 0.0});
+  EXPECT_TRUE(foot.has_value());
+  if (!foot) return c;
+  c.foot = *foot;
+  c.height = d.expected_height_px(cam.k, pose, c.at);
+  const double h = c.height;
+  const int x0 = half_width > 0.0 ? static_cast<int>(foot->u - half_width * h) : 0;
+  const int x1 = half_width > 0.0 ? static_cast<int>(foot->u + half_width * h) : cam.k.width;
   for (int y = std::max(0, static_cast<int>(foot->v - h)); y < static_cast<int>(foot->v); ++y) {
-    for (int x = static_cast<int>(foot->u - 0.25 * h); x < static_cast<int>(foot->u + 0.25 * h); ++x) {
-      img[static_cast<std::size_t>(y * cam.k.width + x)] = 230;
-    }
+    for (int x = x0; x < x1; ++x) img[static_cast<std::size_t>(y * cam.k.width + x)] = 230;
   }
   hal::FrameView view = frame.view;
   view.data = img.data();
@@ -100,17 +110,31 @@ TEST(Robots, ColumnStandingOnTheFieldIsFoundAtItsFoot) {
   view.format = hal::PixelFormat::kGray8;
   ClassImage classes(cam.k.width, cam.k.height);
   std::vector<int> rows(static_cast<std::size_t>(cam.k.width));
-  ASSERT_TRUE(classes.classify(view, table, horizon_rows(cam.k, pose, 2, rows), 1));
-  RobotList out;
-  d.detect(classes, view, cam.k, pose, 4, nullptr, 0, {}, out);
-  ASSERT_EQ(out.count, 1U);
-  const RobotDetection& r = out.robots[0];
+  EXPECT_TRUE(classes.classify(view, table, horizon_rows(cam.k, pose, 2, rows), 1));
+  d.detect(classes, view, cam.k, pose, 4, nullptr, 0, {}, c.out);
+  return c;
+}
+
+TEST(Robots, ColumnStandingOnTheFieldIsFoundAtItsFoot) {
+  const Column c = detect_column(0.25);
+  const double h = c.height;
+  ASSERT_GT(h, 50.0);
+  ASSERT_EQ(c.out.count, 1U);
+  const RobotDetection& r = c.out.robots[0];
   EXPECT_FALSE(r.verified);
-  EXPECT_NEAR(r.foot.u, foot->u, 4.0);
-  EXPECT_NEAR(r.foot.v, foot->v, 2.0);
-  EXPECT_NEAR(r.distance_m, std::hypot(at.x, at.y), 0.03 * std::hypot(at.x, at.y));
-  EXPECT_NEAR(r.bearing_rad, std::atan2(at.y, at.x), 0.02);
+  EXPECT_NEAR(r.foot.u, c.foot.u, 4.0);
+  EXPECT_NEAR(r.foot.v, c.foot.v, 2.0);
+  EXPECT_NEAR(r.distance_m, std::hypot(c.at.x, c.at.y), 0.03 * std::hypot(c.at.x, c.at.y));
+  EXPECT_NEAR(r.bearing_rad, std::atan2(c.at.y, c.at.x), 0.02);
   EXPECT_NEAR(r.height, h, 0.05 * h);
+}
+
+TEST(Robots, NonFieldAcrossTheWholeViewIsNoRobot) {
+  // The floor beyond the carpet also "stands on the field", but it is many robots wide.
+  const Column c = detect_column(0.0);
+  ASSERT_GT(c.height, 50.0);
+  EXPECT_EQ(c.out.count, 0U);
+  EXPECT_EQ(c.out.candidates, 0);
 }
 
 // The window placements the trainer and the detectors share.

@@ -48,7 +48,8 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     const double u = 0.5 * (open.x_min + open.x_max + s);
     const double eh = height_at(u, open.foot_row, nullptr);
     const double width = open.x_max - open.x_min + s;
-    if (eh <= 0.0 || width < params_.min_width_share * eh * params_.width_m / params_.height_m) return;
+    const double expected_width = eh * params_.width_m / params_.height_m;
+    if (eh <= 0.0 || width < params_.min_width_share * expected_width || width > params_.max_width_share * expected_width) return;
     if (count_ < cands_.size()) {
       cands_[count_++] = open;
     } else {  // full: keep the widest

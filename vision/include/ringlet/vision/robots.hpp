@@ -36,7 +36,9 @@ struct RobotParams {
   double width_m = 0.31;           // its shoulders (arms down)
   double min_height_px = 16.0;     // robots smaller in the image (≈ 9 m away) are not looked for
   double min_height_share = 0.4;   // run length / expected height
-  double min_width_share = 0.25;   // candidate width / expected width
+  double min_width_share = 0.25;   // candidate width / expected width ...
+  double max_width_share = 3.0;    // ... at most this (two robots side by side; the floor beyond
+                                   //   the carpet is a "non-field run on the field" too, but wide)
   double window_height = 64.0 / 56.0;  // window height / expected robot height (margin above and below)
   double foot_row = 60.0 / 64.0;   // where the foot lies in the window, as a share of its height
 };
