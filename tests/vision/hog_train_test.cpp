@@ -4,6 +4,7 @@
 // reader names the file and the field it misses.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -11,6 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "ringlet/vision/hog_svm.hpp"
+#include "run_command.hpp"
 #include "samples.hpp"
 #include "temp_dir.hpp"
 #include "trainer.hpp"
@@ -144,6 +146,35 @@ TEST_F(DatasetDir, ReadsTheDatasetsEdgeBoxes) {
   EXPECT_DOUBLE_EQ(frames[0].ignore[1].w, 40.0);
   write("frame_0000.json", R"({"image": "frame_0000.png", "generator_version": 3, "balls": [{"box": [10, 20, 5, 60]}]})");
   EXPECT_NE(error(HogTarget::kBall).find("width and height must be positive"), std::string::npos);
+}
+
+// The trainer sees the detector's own proposals: load_dataset fills them for ringlet-dataset
+// frames (which carry their camera), clutter included, and the visible balls are among them.
+TEST(HogTrainProposals, DatasetFramesCarryTheDetectorsProposals) {
+  const ringlet::test::TempDir tmp("ringlet_proposals");
+  const auto run = ringlet::test::run_command(std::string(RINGLET_DATASET_BIN) + " --seed 7 -n 6 -q --no-labels -o " +
+                                              tmp.path().string() + " 2>&1");
+  ASSERT_EQ(run.rc, 0) << run.out;
+  const std::vector<LabelledFrame> frames = load_dataset(tmp.path(), HogTarget::kBall, 0.5, 0);
+  ASSERT_EQ(frames.size(), 6U);
+  std::size_t proposals = 0, balls = 0, proposed = 0;
+  for (const LabelledFrame& f : frames) {
+    proposals += f.proposals.size();
+    balls += f.objects.size();
+    for (const Box& o : f.objects) {
+      const double r = 0.25 * (o.w + o.h);
+      for (const Proposal& p : f.proposals) {
+        if (std::hypot(p.centre.u - (o.x + 0.5 * o.w), p.centre.v - (o.y + 0.5 * o.h)) <= std::max(0.5 * r, 4.0)) {
+          ++proposed;
+          break;
+        }
+      }
+    }
+  }
+  ASSERT_GT(balls, 0U);
+  EXPECT_GT(proposals, balls) << "clutter is proposed too: the negatives the classifier must learn";
+  EXPECT_GE(2 * proposed, balls) << "most visible balls are proposed";
+  EXPECT_TRUE(load_dataset(tmp.path(), HogTarget::kRobot, 0.5, 0)[0].proposals.empty()) << "ball only";
 }
 
 }  // namespace

@@ -223,7 +223,10 @@ std::vector<LabelledFrame> load_dataset(const std::filesystem::path& dir, HogTar
       throw ToolError(src + ": no \"" + key + "\" array of {\"box\": [x, y, w, h]} (a dataset written before " +
                       key + " truth existed? regenerate it with this ringlet-dataset)");
     }
-    f.gray = to_gray(tools::load_bgr(file.parent_path() / j["image"].get<std::string>()));
+    const cv::Mat bgr = tools::load_bgr(file.parent_path() / j["image"].get<std::string>());
+    f.gray = to_gray(bgr);
+    // Frames that carry their camera (ringlet-dataset) also yield the detector's proposals.
+    if (target == HogTarget::kBall && j.contains("intrinsics")) f.proposals = ball_proposals(file, bgr);
     frames.push_back(std::move(f));
   }
   return frames;

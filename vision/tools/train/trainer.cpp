@@ -173,6 +173,31 @@ double choose_threshold(const SampleMatrix& m, const Fit& fit, double target, bo
 
 }  // namespace
 
+namespace {
+
+// A proposal's label: +1 on a true object (centre within max(half its radius, 4 px), the
+// evaluation's rule), −1 clear of every object and hidden object, 0 (left out) in between.
+int proposal_label(const Proposal& p, const LabelledFrame& f) {
+  int label = -1;
+  const auto near = [&](const Box& o, bool counts) {
+    const double r = 0.25 * (o.w + o.h);
+    const double d = std::hypot(p.centre.u - (o.x + 0.5 * o.w), p.centre.v - (o.y + 0.5 * o.h));
+    if (counts && d <= std::max(0.5 * r, 4.0)) return 1;
+    return d < r + 2.0 * p.radius ? 0 : -1;
+  };
+  for (const Box& o : f.objects) {
+    const int l = near(o, true);
+    if (l == 1) return 1;
+    if (l == 0) label = 0;
+  }
+  for (const Box& o : f.ignore) {
+    if (near(o, false) == 0) label = 0;
+  }
+  return label;
+}
+
+}  // namespace
+
 bool held_out(std::uint64_t seed, std::uint64_t index, double share) {
   SplitMix64 g = SplitMix64::for_frame(seed ^ 0x5A11D47E0ULL, index);
   return static_cast<double>(g.below(1000000)) < share * 1e6;
@@ -182,7 +207,7 @@ TrainResult train_hog(const std::vector<LabelledFrame>& frames, const PatchSet& 
   const HogParams hog = params_for(config.target);
   Builder b(hog);
   TrainResult out{HogSvm(config.target, hog, std::vector<float>(static_cast<std::size_t>(hog.feature_length()), 0.0f), 0, 0),
-                  {}, {}, 0, 0, 0, 0, 0, true, nullptr, 1.0, {}};
+                  {}, {}, 0, 0, 0, 0, 0, true, nullptr, 1.0, {}, 0, 0};
   std::vector<std::uint8_t> patch;
   std::vector<bool> frame_validation(frames.size());
   for (std::size_t fi = 0; fi < frames.size(); ++fi) {
@@ -205,6 +230,15 @@ TrainResult train_hog(const std::vector<LabelledFrame>& frames, const PatchSet& 
         cut_patch(f.gray, w, hog, patch);
         b.add(patch, +1, val);
       }
+    }
+    // The detector's own proposals (proposals.hpp), labelled by the truth: what the classifier
+    // meets at run time, in training and in the validation that sets the threshold.
+    for (const Proposal& p : f.proposals) {
+      const int label = proposal_label(p, f);
+      if (label == 0) continue;
+      cut_patch(f.gray, p.window, hog, patch);
+      b.add(patch, label, val);
+      (label > 0 ? out.proposal_positives : out.proposal_negatives)++;
     }
     for (int k = 0, tries = 0; k < config.negatives_per_frame && tries < 20 * config.negatives_per_frame; ++tries) {
       Box implied;
@@ -232,6 +266,8 @@ TrainResult train_hog(const std::vector<LabelledFrame>& frames, const PatchSet& 
   Fit fit = fit_svm(b.m, config.c);
   out.log.push_back("round 0: " + std::to_string(train_pos) + " positive and " + std::to_string(train_neg) +
                     " negative training windows");
+  out.log.push_back("the detector's proposals (training and validation): " + std::to_string(out.proposal_positives) +
+                    " on a ball, " + std::to_string(out.proposal_negatives) + " clear of every ball");
   for (int round = 1; round <= config.hard_rounds && !frames.empty(); ++round) {
     // Hard negatives: random windows of the training frames the current model scores as the target.
     int added = 0;

@@ -53,6 +53,7 @@ struct TrainResult {
   cv::Ptr<cv::ml::SVM> svm;       // OpenCV's model (for the round-trip test)
   double opencv_sign = 1.0;       // our score = sign × OpenCV's raw decision value
   std::vector<std::string> log;
+  int proposal_positives = 0, proposal_negatives = 0;  // of the samples: the detector's proposals
 };
 
 /// Trains from labelled frames and/or patches (either may be empty, not both). ToolError when
