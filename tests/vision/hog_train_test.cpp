@@ -164,7 +164,7 @@ TEST(HogTrainProposals, DatasetFramesCarryTheDetectorsProposals) {
     for (const Box& o : f.objects) {
       const double r = 0.25 * (o.w + o.h);
       for (const Proposal& p : f.proposals) {
-        if (std::hypot(p.centre.u - (o.x + 0.5 * o.w), p.centre.v - (o.y + 0.5 * o.h)) <= std::max(0.5 * r, 4.0)) {
+        if (std::hypot(p.at.u - (o.x + 0.5 * o.w), p.at.v - (o.y + 0.5 * o.h)) <= std::max(0.5 * r, 4.0)) {
           ++proposed;
           break;
         }
@@ -174,7 +174,9 @@ TEST(HogTrainProposals, DatasetFramesCarryTheDetectorsProposals) {
   ASSERT_GT(balls, 0U);
   EXPECT_GT(proposals, balls) << "clutter is proposed too: the negatives the classifier must learn";
   EXPECT_GE(2 * proposed, balls) << "most visible balls are proposed";
-  EXPECT_TRUE(load_dataset(tmp.path(), HogTarget::kRobot, 0.5, 0)[0].proposals.empty()) << "ball only";
+  std::size_t robot_proposals = 0;
+  for (const LabelledFrame& f : load_dataset(tmp.path(), HogTarget::kRobot, 0.5, 0)) robot_proposals += f.proposals.size();
+  EXPECT_GT(robot_proposals, 0U) << "the robot detector proposes too";
 }
 
 }  // namespace

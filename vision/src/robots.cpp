@@ -62,18 +62,28 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
 
   for (int x = 0; x < classes.width(); x += col_stride) {
     // The longest qualifying run of this column that stands on the field (the lowest one wins ties).
+    // A robot's body is not uniformly non-field (shaded grey parts can pass for carpet): field
+    // gaps shorter than max_gap_share of the expected height do not end a run.
     int best_foot = -1;
     int run_start = -1;
-    for (int y = first; y < h; y += s) {
-      const bool nf = classes.at(x, y) != ColourClass::kField;
-      if (nf && run_start < 0) run_start = y;
-      if (nf || run_start < 0) continue;
-      const double eh = height_at(x + 0.5 * s, y, nullptr);  // y: the first field row below the run
-      if (eh >= params_.min_height_px &&
-          (y - run_start >= params_.min_height_share * eh || run_start == first)) {
-        best_foot = y;
+    int field_since = -1;  // first field row after the current run (-1: inside the run)
+    for (int y = first; y <= h; y += s) {
+      const bool nf = y < h && classes.at(x, y) != ColourClass::kField;
+      if (nf) {
+        if (run_start < 0) run_start = y;
+        field_since = -1;
+        continue;
+      }
+      if (run_start < 0) continue;
+      if (field_since < 0) field_since = y;
+      const double eh = height_at(x + 0.5 * s, field_since, nullptr);  // the run's foot row
+      if (y < h && y - field_since < std::max(2 * s, static_cast<int>(params_.max_gap_share * eh))) continue;
+      if (field_since < h && eh >= params_.min_height_px &&
+          (field_since - run_start >= params_.min_height_share * eh || run_start == first)) {
+        best_foot = field_since;
       }
       run_start = -1;
+      field_since = -1;
     }
     if (best_foot < 0) {
       if (has_open && x - open.x_max > 2 * col_stride) close();

@@ -226,7 +226,7 @@ std::vector<LabelledFrame> load_dataset(const std::filesystem::path& dir, HogTar
     const cv::Mat bgr = tools::load_bgr(file.parent_path() / j["image"].get<std::string>());
     f.gray = to_gray(bgr);
     // Frames that carry their camera (ringlet-dataset) also yield the detector's proposals.
-    if (target == HogTarget::kBall && j.contains("intrinsics")) f.proposals = ball_proposals(file, bgr);
+    if (j.contains("intrinsics")) f.proposals = detector_proposals(target, file, bgr);
     frames.push_back(std::move(f));
   }
   return frames;

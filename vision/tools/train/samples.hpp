@@ -25,7 +25,7 @@ struct LabelledFrame {
   cv::Mat gray;               // 8-bit luminance
   std::vector<Box> objects;   // the target's boxes (positives)
   std::vector<Box> ignore;    // boxes of the target too hidden to be positives: no negatives there either
-  std::vector<Proposal> proposals;  // the ball detector's own candidate windows (proposals.hpp); ball only
+  std::vector<Proposal> proposals;  // the target detector's own candidate windows (proposals.hpp)
   std::string source;         // file name, for messages
 };
 

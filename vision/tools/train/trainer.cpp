@@ -175,15 +175,21 @@ double choose_threshold(const SampleMatrix& m, const Fit& fit, double target, bo
 
 namespace {
 
-// A proposal's label: +1 on a true object (centre within max(half its radius, 4 px), the
-// evaluation's rule), −1 clear of every object and hidden object, 0 (left out) in between.
-int proposal_label(const Proposal& p, const LabelledFrame& f) {
+// A proposal's label by the evaluation's rules: a ball's centre within max(half its radius,
+// 4 px) of a true ball's; a robot's foot point within max(half the box's width, 4 px) of a true
+// robot's (the middle of its box's bottom edge). +1 on a true object, −1 clear of every object and
+// hidden object, 0 (left out) in between.
+int proposal_label(HogTarget target, const Proposal& p, const LabelledFrame& f) {
   int label = -1;
   const auto near = [&](const Box& o, bool counts) {
-    const double r = 0.25 * (o.w + o.h);
-    const double d = std::hypot(p.centre.u - (o.x + 0.5 * o.w), p.centre.v - (o.y + 0.5 * o.h));
-    if (counts && d <= std::max(0.5 * r, 4.0)) return 1;
-    return d < r + 2.0 * p.radius ? 0 : -1;
+    const bool ball = target == HogTarget::kBall;
+    const double cx = o.x + 0.5 * o.w;
+    const double cy = ball ? o.y + 0.5 * o.h : o.y + o.h;
+    const double reach = ball ? 0.5 * (0.25 * (o.w + o.h)) : 0.5 * o.w;
+    const double d = std::hypot(p.at.u - cx, p.at.v - cy);
+    if (counts && d <= std::max(reach, 4.0)) return 1;
+    const double clear = ball ? 0.25 * (o.w + o.h) + 2.0 * p.size : o.w;
+    return d < clear ? 0 : -1;
   };
   for (const Box& o : f.objects) {
     const int l = near(o, true);
@@ -234,7 +240,7 @@ TrainResult train_hog(const std::vector<LabelledFrame>& frames, const PatchSet& 
     // The detector's own proposals (proposals.hpp), labelled by the truth: what the classifier
     // meets at run time, in training and in the validation that sets the threshold.
     for (const Proposal& p : f.proposals) {
-      const int label = proposal_label(p, f);
+      const int label = proposal_label(config.target, p, f);
       if (label == 0) continue;
       cut_patch(f.gray, p.window, hog, patch);
       b.add(patch, label, val);
@@ -267,7 +273,7 @@ TrainResult train_hog(const std::vector<LabelledFrame>& frames, const PatchSet& 
   out.log.push_back("round 0: " + std::to_string(train_pos) + " positive and " + std::to_string(train_neg) +
                     " negative training windows");
   out.log.push_back("the detector's proposals (training and validation): " + std::to_string(out.proposal_positives) +
-                    " on a ball, " + std::to_string(out.proposal_negatives) + " clear of every ball");
+                    " on a true object, " + std::to_string(out.proposal_negatives) + " clear of every object");
   for (int round = 1; round <= config.hard_rounds && !frames.empty(); ++round) {
     // Hard negatives: random windows of the training frames the current model scores as the target.
     int added = 0;

@@ -38,7 +38,7 @@ struct DegradeProfile {
                           // that lines keep enough points while trials × points still shrinks
   int circle_trials = -1; // centre circle hypotheses (−1: ransac.circle.max_trials)
   int ball_classify = 3;  // black-and-white ball candidates given to the HOG/SVM (0: classifier dropped)
-  int robot_classify = 1; // robot candidates given to the HOG/SVM (0: classifier dropped)
+  int robot_classify = 3; // robot candidates given to the HOG/SVM (0: classifier dropped)
 };
 
 inline constexpr int kDegradeLevels = 3;
@@ -63,7 +63,7 @@ struct VisionConfig {
   // classified, scan lines twice as far apart, half the trials; 2 = least. The HOG classifiers go
   // first: fewer candidates classified at level 1, none at level 2.
   std::array<DegradeProfile, kDegradeLevels> degrade{{
-      {1, 3, -1, -1, 4, -1, -1, 3, 1},
+      {1, 3, -1, -1, 4, -1, -1, 3, 3},
       {2, 4, 15, 6, 6, 5, 20, 2, 1},
       {2, 8, 8, 4, 8, 3, 10, 0, 0},
   }};

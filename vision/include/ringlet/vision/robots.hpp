@@ -36,6 +36,7 @@ struct RobotParams {
   double width_m = 0.31;           // its shoulders (arms down)
   double min_height_px = 16.0;     // robots smaller in the image (≈ 9 m away) are not looked for
   double min_height_share = 0.4;   // run length / expected height
+  double max_gap_share = 0.5;      // field gaps inside a run up to this × expected height are bridged
   double min_width_share = 0.25;   // candidate width / expected width ...
   double max_width_share = 3.0;    // ... at most this (two robots side by side; the floor beyond
                                    //   the carpet is a "non-field run on the field" too, but wide)
