@@ -67,6 +67,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     int best_foot = -1;
     int run_start = -1;
     int field_since = -1;  // first field row after the current run (-1: inside the run)
+    double run_eh = 0.0;   // the expected height at field_since (computed once per gap)
     for (int y = first; y <= h; y += s) {
       const bool nf = y < h && classes.at(x, y) != ColourClass::kField;
       if (nf) {
@@ -75,11 +76,13 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
         continue;
       }
       if (run_start < 0) continue;
-      if (field_since < 0) field_since = y;
-      const double eh = height_at(x + 0.5 * s, field_since, nullptr);  // the run's foot row
-      if (y < h && y - field_since < std::max(2 * s, static_cast<int>(params_.max_gap_share * eh))) continue;
-      if (field_since < h && eh >= params_.min_height_px &&
-          (field_since - run_start >= params_.min_height_share * eh || run_start == first)) {
+      if (field_since < 0) {
+        field_since = y;
+        run_eh = height_at(x + 0.5 * s, field_since, nullptr);  // the run's foot row
+      }
+      if (y < h && y - field_since < std::max(2 * s, static_cast<int>(params_.max_gap_share * run_eh))) continue;
+      if (field_since < h && run_eh >= params_.min_height_px &&
+          (field_since - run_start >= params_.min_height_share * run_eh || run_start == first)) {
         best_foot = field_since;
       }
       run_start = -1;
