@@ -25,6 +25,7 @@ import readme_figures as rf  # noqa: E402  (the README's markers: one module for
 
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = Path("docs/results")
+MODELS = Path("vision/models")
 WORK = Path("out/results")
 
 # The vision evaluation's sets (vision/README.md, "Evaluation"): Hough is tuned on the tuning set,
@@ -189,7 +190,8 @@ def overlay(tool, folder, index, out):
          "--width", k["width"], "--height", k["height"], "--fx", repr(k["fx"]), "--fy", repr(k["fy"]),
          "--cx", repr(k["cx"]), "--cy", repr(k["cy"]), "--pivot-height", repr(mount["pivot_height"]),
          "--camera-forward", repr(mount["forward"]), "--camera-up", repr(mount["up"]),
-         "--yaw", repr(math.degrees(head["yaw"])), "--pitch", repr(math.degrees(head["pitch"]))])
+         "--yaw", repr(math.degrees(head["yaw"])), "--pitch", repr(math.degrees(head["pitch"])),
+         "--ball-model", MODELS / "ball.hog", "--robot-model", MODELS / "robot.hog"])
 
 
 def evaluate(tool, test_set, tune_set, excluded, seed, svg):
@@ -313,7 +315,8 @@ def results_markdown(fx, missions, skipped, realtime, vision, commands):
             md += ["", f"Speed ratio (Hough median / Ringlet median): {f(j['speed_ratio'], 2)}×.", ""]
             if e.get("svg"):
                 md += [f"![Ringlet vs Canny + HoughLinesP]({Path(e['svg']).name})", ""]
-        md += [f"Overlays (`ringlet-vision --overlay`; green: lines, blue: horizon) of frame {vision['open']} "
+        md += [f"Overlays (`ringlet-vision --overlay` with the shipped ball and robot models; green: lines, blue: "
+               f"horizon, magenta: centre circle, orange: balls, cyan: robots' boxes and foot points) of frame {vision['open']} "
                f"(open field) and frame {vision['robot']} (a robot close by) of the seed {TEST_SETS[0]['seed']} test set:", "",
                "| open field | a robot close by |", "|---|---|",
                "| ![overlay](vision_overlay_field.png) | ![overlay with a robot](vision_overlay_robot.png) |", ""]
@@ -459,6 +462,7 @@ def main(argv=None):
         for i, name in ((open_i, "vision_overlay_field.png"), (robot_i, "vision_overlay_robot.png")):
             overlay(tools["vision"], folder, i, DOCS / name)
             commands.append(f"{DOCS / name}: ringlet-vision {folder}/frame_{i:04d}.png --overlay {DOCS / name} "
+                            f"--ball-model {MODELS / 'ball.hog'} --robot-model {MODELS / 'robot.hog'} "
                             f"(camera flags from frame_{i:04d}.json)")
         state["overlays"] = (open_i, robot_i)
 

@@ -36,6 +36,18 @@ TEST(BwBall, ExpectedRadiusIsFocalLengthTimesRadiusOverDepth) {
   EXPECT_EQ(d.expected_radius_px(cam.k, pose, {320, 0}), 0.0);
 }
 
+// Renders `scene` (YUYV), classifies it with the default table and runs the detector unverified
+// at ball stride 4.
+void detect_unverified(const testing::Scene& scene, const Camera& cam, BwBallDetector& d, BallList& out) {
+  const hal::CameraPose pose = cam.pose();
+  const auto frame = testing::render(scene, cam, hal::PixelFormat::kYuyv);
+  ClassImage classes(cam.k.width, cam.k.height);
+  std::vector<int> rows(static_cast<std::size_t>(cam.k.width));
+  const int horizon = horizon_rows(cam.k, pose, 2, rows);
+  ASSERT_TRUE(classes.classify(frame.view, ColourTable::from_thresholds({}), horizon, 1));
+  d.detect(classes, frame.view, cam.k, pose, 4, nullptr, 0, {}, out);
+}
+
 TEST(BwBall, RenderedBallGivesACandidateOfTheRightSize) {
   Camera cam;
   const hal::CameraPose pose = cam.pose();
@@ -43,14 +55,9 @@ TEST(BwBall, RenderedBallGivesACandidateOfTheRightSize) {
     testing::Scene scene = testing::field_scene();
     scene.ball = at;
     scene.ball_black_white = true;
-    const auto frame = testing::render(scene, cam, hal::PixelFormat::kYuyv);
-    ClassImage classes(cam.k.width, cam.k.height);
-    std::vector<int> rows(static_cast<std::size_t>(cam.k.width));
-    const int horizon = horizon_rows(cam.k, pose, 2, rows);
-    ASSERT_TRUE(classes.classify(frame.view, ColourTable::from_thresholds({}), horizon, 1));
     BwBallDetector d(BwBallParams{});
     BallList out;
-    d.detect(classes, frame.view, cam.k, pose, 4, nullptr, 0, {}, out);
+    ASSERT_NO_FATAL_FAILURE(detect_unverified(scene, cam, d, out));
     const auto truth = hal::project(cam.k, pose, {at.x, at.y, 0.05});
     ASSERT_TRUE(truth.has_value());
     const double r_true = d.expected_radius_px(cam.k, pose, *truth);
@@ -67,6 +74,41 @@ TEST(BwBall, RenderedBallGivesACandidateOfTheRightSize) {
     EXPECT_FALSE(out.balls[0].verified);
     EXPECT_LE(out.balls[0].confidence, 0.3);
   }
+}
+
+// A white patch of a ball's size lying on the carpet and the black-and-white ball: both are round
+// non-field blobs of the right size, but only the ball has black patches inside, so it ranks first
+// (the unverified report is the ball), and its outline puts the centre within a quarter radius.
+TEST(BwBall, BlackPatchesRankTheBallAboveAPlainWhiteBlob) {
+  Camera cam;
+  const hal::CameraPose pose = cam.pose();
+  testing::Scene scene = testing::field_scene();
+  scene.ball = hal::RobotPoint{1.6, -0.3};
+  scene.ball_black_white = true;
+  scene.blobs = {{{1.0, 0.25}, {1.3, 0.37}}};  // deep enough to look square from the camera
+  BwBallDetector d(BwBallParams{});
+  BallList out;
+  ASSERT_NO_FATAL_FAILURE(detect_unverified(scene, cam, d, out));
+  const auto ball = hal::project(cam.k, pose, {1.6, -0.3, 0.05});
+  const auto blob = hal::project(cam.k, pose, {1.15, 0.31, 0.0});
+  ASSERT_TRUE(ball.has_value() && blob.has_value());
+  const double r = d.expected_radius_px(cam.k, pose, *ball);
+  const auto near = [&](const BallCandidate& c, const hal::Pixel& p, double within) {
+    return std::hypot(c.centre.u - p.u, c.centre.v - p.v) <= within;
+  };
+  ASSERT_GE(d.candidates().size(), 2U);
+  bool blob_proposed = false;
+  for (const BallCandidate& c : d.candidates()) blob_proposed = blob_proposed || near(c, *blob, r);
+  EXPECT_TRUE(blob_proposed) << "the white patch is a candidate too (the contrast only ranks it); blob at " << blob->u
+                             << ", " << blob->v << "; first candidate at " << d.candidates()[0].centre.u << ", "
+                             << d.candidates()[0].centre.v << "; " << d.candidates().size() << " candidates";
+  const BallCandidate& best = d.candidates()[0];
+  EXPECT_TRUE(near(best, *ball, 0.25 * r)) << "best at " << best.centre.u << ", " << best.centre.v << ", ball at "
+                                           << ball->u << ", " << ball->v << " r " << r;
+  EXPECT_GT(best.contrast, 0.5);
+  EXPECT_GT(best.roundness, 0.5);
+  ASSERT_GT(out.count, 0U);
+  EXPECT_NEAR(out.balls[0].centre.u, ball->u, 0.25 * r);
 }
 
 // A robot drawn as a white column in the image, standing at a ground point: its foot row from the

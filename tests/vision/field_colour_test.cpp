@@ -279,6 +279,68 @@ TEST(FieldColour, NoFieldInViewHoldsThenFallsBackToTheTable) {
   EXPECT_EQ(pipeline.process(field.frame.view, cam.head).field_colour.source, ColourSource::kFrame);
 }
 
+// A dull carpet below a grey floor and grey robots covering most of the view: the grey's mass
+// sits in the chroma bins next to the carpet's. The field's peak and centre are taken over
+// green-ish bins only, so the grey neither wins the peak nor drags the cluster's median to grey.
+TEST(FieldColour, DullCarpetBesideMoreGreyIsStillTheField) {
+  const int w = 640, h = 480;
+  testing::Frame f;
+  f.view.format = hal::PixelFormat::kYuyv;
+  f.view.width = w;
+  f.view.height = h;
+  f.view.stride = 2 * w;
+  f.bytes.resize(static_cast<std::size_t>(f.view.stride) * h);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; x += 2) {
+      const bool carpet = y >= 300;  // 37.5 % of the view
+      const auto seed = static_cast<std::uint32_t>(y * w + x);
+      std::uint8_t* p = f.bytes.data() + static_cast<std::size_t>(y * f.view.stride + 2 * x);
+      p[0] = static_cast<std::uint8_t>(jitter(carpet ? 100 : 125, 3, mix(seed)));
+      p[1] = static_cast<std::uint8_t>(jitter(carpet ? 118 : 127, 2, mix(seed + 1)));
+      p[2] = static_cast<std::uint8_t>(jitter(carpet ? 100 : 125, 3, mix(seed + 2)));
+      p[3] = static_cast<std::uint8_t>(jitter(carpet ? 124 : 129, 2, mix(seed + 3)));
+    }
+  }
+  f.view.data = f.bytes.data();
+  const std::vector<int> rows(static_cast<std::size_t>(w), 0);
+  const FieldColourEstimate e = FieldColourEstimator::measure(f.view, rows, {});
+  ASSERT_TRUE(e.valid);
+  EXPECT_NEAR(e.u, 118, 2);
+  EXPECT_NEAR(e.v, 124, 2);
+  EXPECT_NEAR(e.y, 100, 3);
+  EXPECT_NEAR(e.confidence, 0.375, 0.03);
+}
+
+// Shade scales chroma with brightness. A pixel with a fraction of the field's chroma is shaded
+// carpet when it is darker than the field, but a tinted grey (a ball's white in warm light, a
+// robot's shell) when it is as bright or brighter.
+TEST(FieldColour, PaleFieldChromaIsFieldOnlyInShade) {
+  FieldColourEstimate e;
+  e.valid = true;
+  e.source = ColourSource::kFrame;
+  e.y = 100;
+  e.u = 108;  // field chroma (−20, −10)
+  e.v = 118;
+  e.y_spread = 4;
+  e.uv_spread = 2;
+  e.cell_y.fill(100);
+  e.field_cells = ~std::uint64_t{0};
+  AdaptiveClassifier adaptive;
+  adaptive.build(e, 640, 480);
+  const int cell = 20;
+  // Chroma (−10, −6), a chroma bin's centre: 0.52 of the field's.
+  EXPECT_EQ(adaptive.classify(50, 118, 122, cell), ColourClass::kField);    // shade
+  EXPECT_EQ(adaptive.classify(110, 118, 122, cell), ColourClass::kOther);   // a tinted grey
+  EXPECT_EQ(adaptive.classify(150, 118, 122, cell), ColourClass::kLine);    // bright: a line or a ball's white
+  // The field's own chroma is field at any brightness below a line's.
+  EXPECT_EQ(adaptive.classify(60, 108, 118, cell), ColourClass::kField);
+  EXPECT_EQ(adaptive.classify(120, 108, 118, cell), ColourClass::kField);
+  for (const int luma : {50, 110, 150}) {
+    const auto y = static_cast<std::uint8_t>(luma);
+    EXPECT_EQ(adaptive.classify(y, 118, 122, cell), adaptive.classify_by_comparison(y, 118, 122, cell));
+  }
+}
+
 TEST(FieldColour, TableModeNeverEstimates) {
   Camera cam;
   VisionConfig config;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/vision/fit.hpp"
+
 namespace ringlet::vision {
 namespace {
 
@@ -26,6 +28,13 @@ void horizontal_extent(const ClassImage& c, int x, int y, int reach, int& left, 
   while (left - s >= 0 && x - (left - s) <= reach && non_field(c, left - s, y)) left -= s;
   while (right + s < c.width() && (right + s) - x <= reach && non_field(c, right + s, y)) right += s;
 }
+
+// 16 unit directions, 22.5° apart (literals: the same on every host).
+constexpr double kC1 = 0.92387953251128674, kC2 = 0.70710678118654757, kC3 = 0.38268343236508978;
+constexpr std::array<std::array<double, 2>, 16> kRays{{{1, 0}, {kC1, kC3}, {kC2, kC2}, {kC3, kC1},
+                                                       {0, 1}, {-kC3, kC1}, {-kC2, kC2}, {-kC1, kC3},
+                                                       {-1, 0}, {-kC1, -kC3}, {-kC2, -kC2}, {-kC3, -kC1},
+                                                       {0, -1}, {kC3, -kC1}, {kC2, -kC2}, {kC1, -kC3}}};
 
 double match(double extent, double expected) noexcept {
   if (extent <= 0.0 || expected <= 0.0) return 0.0;
@@ -50,12 +59,91 @@ double BwBallDetector::expected_radius_px(const hal::CameraIntrinsics& k, const 
   return k.fx * params_.radius_m / std::max(depth, 1e-6);
 }
 
+BwBallDetector::Outline BwBallDetector::fit_outline(const ClassImage& classes, const hal::Pixel& centre, double radius) noexcept {
+  const int s = classes.step();
+  const int first = classes.first_row();
+  // The sampled grid point nearest (x, y); false outside the classified part of the image.
+  const auto grid = [&](double x, double y, int& gx, int& gy) {
+    gx = static_cast<int>(std::lround(x / s)) * s;
+    gy = first + static_cast<int>(std::lround((y - first) / s)) * s;
+    return gx >= 0 && gx < classes.width() && gy >= first && gy < classes.height();
+  };
+  int cx = 0, cy = 0;
+  if (!grid(centre.u, centre.v, cx, cy) || !non_field(classes, cx, cy)) return {centre, 0.0};
+  const double reach = params_.max_extent * radius;
+  const double step = 0.5 * s;
+  std::size_t n = 0;
+  for (const auto& d : kRays) {
+    bool field_before = false;
+    for (double t = step; t <= reach; t += step) {
+      int gx = 0, gy = 0;
+      if (!grid(centre.u + t * d[0], centre.v + t * d[1], gx, gy)) break;  // the border: no outline
+      const bool field = !non_field(classes, gx, gy);
+      if (field && field_before) {  // two field samples in a row: the outline lies before them
+        outline_[n] = {centre.u + (t - 1.5 * step) * d[0], centre.v + (t - 1.5 * step) * d[1]};
+        outline_index_[n] = static_cast<int>(n);
+        ++n;
+        break;
+      }
+      field_before = field;
+    }
+  }
+  if (static_cast<int>(n) < params_.min_outline_points) return {centre, 0.0};
+  const IndexedPoints pts{outline_, std::span<const int>(outline_index_.data(), n)};
+  const auto fit = fit_circle_geometric(pts, {{centre.u, centre.v}, radius}, true, 5);
+  if (!fit || std::hypot(fit->centre.x - centre.u, fit->centre.y - centre.v) > radius) return {centre, 0.0};
+  // Roundness: the share of rays with an outline, less for outline points off the circle (RMS
+  // against a quarter of the radius: a sample step of noise costs little, a square foot more).
+  const double rms = circle_rms(*fit, pts);
+  const double fit_quality = std::max(0.0, 1.0 - rms / (0.25 * radius + s));
+  return {{fit->centre.x, fit->centre.y}, static_cast<double>(n) / static_cast<double>(kRays.size()) * fit_quality};
+}
+
+namespace {
+
+// (bright − dark) / (bright + 1) over a grid of samples inside 0.7 × radius: the second brightest
+// and second darkest, so one noisy pixel does not decide it.
+double inner_contrast(const hal::FrameView& frame, const hal::Pixel& centre, double radius) noexcept {
+  std::array<int, 2> hi{-1, -1};
+  std::array<int, 2> lo{256, 256};
+  int n = 0;
+  constexpr int kGrid = 6;
+  for (int i = 0; i < kGrid; ++i) {
+    for (int j = 0; j < kGrid; ++j) {
+      const double dx = (2.0 * (i + 0.5) / kGrid - 1.0) * 0.7 * radius;
+      const double dy = (2.0 * (j + 0.5) / kGrid - 1.0) * 0.7 * radius;
+      if (dx * dx + dy * dy > 0.49 * radius * radius) continue;
+      const int x = static_cast<int>(centre.u + dx);
+      const int y = static_cast<int>(centre.v + dy);
+      if (x < 0 || y < 0 || x >= frame.width || y >= frame.height) continue;
+      const int l = luma_at(frame, x, y);
+      if (l > hi[0]) {
+        hi[1] = hi[0];
+        hi[0] = l;
+      } else if (l > hi[1]) {
+        hi[1] = l;
+      }
+      if (l < lo[0]) {
+        lo[1] = lo[0];
+        lo[0] = l;
+      } else if (l < lo[1]) {
+        lo[1] = l;
+      }
+      ++n;
+    }
+  }
+  if (n < 4) return 0.0;
+  return std::max(0, hi[1] - lo[1]) / static_cast<double>(hi[1] + 1);
+}
+
+}  // namespace
+
 void BwBallDetector::add(const Candidate& c) noexcept {
   for (std::size_t i = 0; i < count_; ++i) {
     Candidate& o = cands_[i];
     const double reach = params_.merge_radii * std::max(o.radius, c.radius);
     if (std::abs(o.centre.u - c.centre.u) <= reach && std::abs(o.centre.v - c.centre.v) <= reach) {
-      if (c.extent > o.extent) o = c;
+      if (c.rank() > o.rank()) o = c;
       return;
     }
   }
@@ -65,8 +153,8 @@ void BwBallDetector::add(const Candidate& c) noexcept {
   }
   // Full: replace the worst if this one is better.
   auto worst = std::min_element(cands_.begin(), cands_.end(),
-                                [](const Candidate& a, const Candidate& b) { return a.extent < b.extent; });
-  if (worst->extent < c.extent) *worst = c;
+                                [](const Candidate& a, const Candidate& b) { return a.rank() < b.rank(); });
+  if (worst->rank() < c.rank()) *worst = c;
 }
 
 void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
@@ -96,11 +184,18 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
     const double height = bottom - top + s;
     double cy = 0.5 * (top + bottom + s);
     if (height > params_.max_extent * d) cy = cy_guess;
-    const double r2 = expected_radius_px(k, pose, {cx, cy});
+    double r2 = expected_radius_px(k, pose, {cx, cy});
     if (r2 < params_.min_radius_px) return;
+    const Outline outline = fit_outline(classes, {cx, cy}, r2);
+    const double r3 = expected_radius_px(k, pose, outline.centre);
+    if (r3 >= params_.min_radius_px) {
+      cx = outline.centre.u;
+      cy = outline.centre.v;
+      r2 = r3;
+    }
     const double e = match(std::min(width, params_.max_extent * 2.0 * r2), 2.0 * r2) *
                      match(std::min(height, params_.max_extent * 2.0 * r2), 2.0 * r2);
-    add({{cx, cy}, r2, e});
+    add({{cx, cy}, r2, e, outline.roundness, inner_contrast(frame, {cx, cy}, r2)});
   };
 
   for (int x = 0; x < classes.width(); x += col_stride) {
@@ -127,11 +222,11 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
     }
   }
   out.candidates = static_cast<int>(count_);
-  // Rank by extent match; insertion sort (stable, and std::stable_sort may allocate a buffer).
+  // Rank by extent match and roundness; insertion sort (stable, and std::stable_sort may allocate a buffer).
   for (std::size_t i = 1; i < count_; ++i) {
     const Candidate c = cands_[i];
     std::size_t j = i;
-    for (; j > 0 && cands_[j - 1].extent < c.extent; --j) cands_[j] = cands_[j - 1];
+    for (; j > 0 && cands_[j - 1].rank() < c.rank(); --j) cands_[j] = cands_[j - 1];
     cands_[j] = c;
   }
 
@@ -154,7 +249,7 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
     if (count_ > 0) {
       BallDetection& b = out.balls[0];
       fill(cands_[0], b);
-      b.confidence = 0.3 * cands_[0].extent;
+      b.confidence = 0.3 * std::min(1.0, cands_[0].rank());
       out.count = 1;
     }
     return;

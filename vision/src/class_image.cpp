@@ -105,7 +105,7 @@ bool ClassImage::classify(const hal::FrameView& frame, const AdaptiveClassifier&
             // Whole pixel pairs: the chroma bits once per pair.
             for (std::size_t x = xs; x < xe; x += 2) {
               const std::uint8_t* p = in + 2 * x;  // Y0 U Y1 V
-              const unsigned c = static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(p[1], p[3])]) << 3;
+              const unsigned c = static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(p[1], p[3])]) << AdaptiveClassifier::kBits;
               out[x] = combine[c | luma[p[0]]];
               out[x + 1] = combine[c | luma[p[2]]];
             }
@@ -113,7 +113,7 @@ bool ClassImage::classify(const hal::FrameView& frame, const AdaptiveClassifier&
             for (std::size_t x = xs; x < xe; x += s) {
               const std::uint8_t* pair = in + 4 * (x / 2);
               const std::uint8_t v = (x | 1U) < w ? pair[3] : std::uint8_t{128};
-              const unsigned c = static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(pair[1], v)]) << 3;
+              const unsigned c = static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(pair[1], v)]) << AdaptiveClassifier::kBits;
               out[x] = combine[c | luma[in[2 * x]]];
             }
           }
@@ -122,12 +122,12 @@ bool ClassImage::classify(const hal::FrameView& frame, const AdaptiveClassifier&
           for (std::size_t x = xs; x < xe; x += s) {
             const std::uint8_t* p = in + 3 * x;
             const Yuv q = bgr_to_yuv(p[0], p[1], p[2]);
-            out[x] = combine[static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(q.u, q.v)]) << 3 | luma[q.y]];
+            out[x] = combine[static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(q.u, q.v)]) << AdaptiveClassifier::kBits | luma[q.y]];
           }
           break;
         case hal::PixelFormat::kGray8:
           for (std::size_t x = xs; x < xe; x += s) {
-            out[x] = combine[static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(128, 128)]) << 3 | luma[in[x]]];
+            out[x] = combine[static_cast<unsigned>(chroma[AdaptiveClassifier::chroma_index(128, 128)]) << AdaptiveClassifier::kBits | luma[in[x]]];
           }
           break;
       }

@@ -43,6 +43,7 @@ FieldChromaRule::FieldChromaRule(const FieldColourEstimate& e, const AdaptiveCol
   t_max256 = std::lround(p.cone_t_max * 256.0);
   slope256 = std::lround(p.cone_slope * 256.0);
   tol_f256 = std::lround(tolerance * std::sqrt(static_cast<double>(f2)) * 256.0);
+  pale_t256 = std::lround(p.pale_t * 256.0);
   line_max_chroma = p.line_max_chroma;
 }
 
@@ -115,7 +116,7 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
       if (chroma_hist_[static_cast<std::size_t>(bu * kHistBins + bv)] == 0 || !green_bin(bu, bv)) continue;
       long s = 0;
       for (int du = -1; du <= 1; ++du)
-        for (int dv = -1; dv <= 1; ++dv) s += bin(bu + du, bv + dv);
+        for (int dv = -1; dv <= 1; ++dv) s += green_bin(bu + du, bv + dv) ? bin(bu + du, bv + dv) : 0;
       if (s > best) {
         best = s;
         best_u = bu;
@@ -127,7 +128,7 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
   for (int du = -1; du <= 1; ++du)
     for (int dv = -1; dv <= 1; ++dv) {
       const int u = best_u + du, v = best_v + dv;
-      if (u < 0 || u >= kHistBins || v < 0 || v >= kHistBins) continue;
+      if (u < 0 || u >= kHistBins || v < 0 || v >= kHistBins || !green_bin(u, v)) continue;
       const auto b = static_cast<std::size_t>(u * kHistBins + v);
       su += sum_u_[b];
       sv += sum_v_[b];
@@ -137,13 +138,17 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
   const int cu = static_cast<int>((su + m / 2) / m);
   const int cv = static_cast<int>((sv + m / 2) / m);
 
-  // The cluster's members (chroma within cluster_radius of the centre): Y, U, V medians, spreads.
+  // The cluster's members (green-ish chroma within cluster_radius of the centre: the grey of a
+  // floor or of robots next to a dull carpet stays out): Y, U, V medians, spreads.
+  const auto green_sample = [&](const Yuv& p) {
+    return p.u <= params.field_max_u && p.v <= params.field_max_v && (128 - p.u) + (128 - p.v) >= params.field_min_chroma;
+  };
   const int r = std::max(params.cluster_radius, 1);
   std::array<std::uint16_t, 256> hy{}, hu{}, hv{};
   int members = 0;
   for (int i = 0; i < n; ++i) {
     const Yuv& p = samples_[static_cast<std::size_t>(i)].yuv;
-    if (std::abs(p.u - cu) > r || std::abs(p.v - cv) > r) continue;
+    if (std::abs(p.u - cu) > r || std::abs(p.v - cv) > r || !green_sample(p)) continue;
     ++hy[p.y];
     ++hu[p.u];
     ++hv[p.v];
@@ -161,15 +166,17 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
   const bool green = e.u <= params.field_max_u && e.v <= params.field_max_v &&
                      (128 - e.u) + (128 - e.v) >= params.field_min_chroma;
 
-  // Every sample of field chroma (the classifier's rule: shaded and sunlit carpet too) counts as
-  // field: its share is the confidence, and per cell its median Y is the local field luminance.
+  // Every sample of field chroma (the classifier's rule: shaded and sunlit carpet too; pale field
+  // chroma only where darker than the field) counts as field: its share is the confidence, and per
+  // cell its median Y is the local field luminance.
   const FieldChromaRule rule(e, params);
+  const long pale_y256 = std::lround(params.pale_y_ratio * 256.0) * e.y;
   for (auto& h : cell_hist_) h.fill(0);
   std::array<int, kColourCells> cell_n{};
   int field = 0;
   for (int i = 0; i < n; ++i) {
     const Sample& s = samples_[static_cast<std::size_t>(i)];
-    if (!rule.field(s.yuv.u, s.yuv.v)) continue;
+    if (!rule.field(s.yuv.u, s.yuv.v) || (s.yuv.y * 256L > pale_y256 && rule.pale(s.yuv.u, s.yuv.v))) continue;
     ++field;
     ++cell_hist_[s.cell][s.yuv.y >> 2];
     ++cell_n[s.cell];
@@ -241,7 +248,7 @@ void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int heig
       const int u = (bu << kShift) + (1 << kShift) / 2;
       const int v = (bv << kShift) + (1 << kShift) / 2;
       std::uint8_t bits = 0;
-      if (rule_.field(u, v)) bits |= kFieldBit;
+      if (rule_.field(u, v)) bits |= rule_.pale(u, v) ? kPaleBit : kFieldBit;
       if (rule_.unsaturated(u, v)) bits |= kLineBit;
       if (u >= p.ball.u_min && u <= p.ball.u_max && v >= p.ball.v_min && v <= p.ball.v_max) bits |= kBallBit;
       chroma_[static_cast<std::size_t>(bu * kBins + bv)] = bits;
@@ -258,23 +265,27 @@ void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int heig
     const int field_lo = fy - std::max(p.field_y_below, static_cast<int>(std::lround(p.field_y_k * spread_y)));
     line_y_[static_cast<std::size_t>(c)] = line_y;
     field_lo_[static_cast<std::size_t>(c)] = field_lo;
+    const long pale_y256 = std::lround(p.pale_y_ratio * 256.0) * fy;
+    pale_y256_[static_cast<std::size_t>(c)] = pale_y256;
     std::uint8_t* luma = luma_.data() + cell_offset(c);
     for (int y = 0; y < 256; ++y) {
       std::uint8_t bits = 0;
       if (y >= field_lo) bits |= kFieldBit;  // brighter than a line but saturated: sunlit carpet
+      if (y >= field_lo && y * 256L <= pale_y256) bits |= kPaleBit;
       if (y >= line_y) bits |= kLineBit;
       if (y >= p.ball.y_min && y <= p.ball.y_max) bits |= kBallBit;
       luma[y] = bits;
     }
   }
   for (std::size_t i = 0; i < combine_.size(); ++i) {
-    const auto both = static_cast<std::uint8_t>((i >> 3) & i & 7U);
+    constexpr std::size_t kMask = (1U << kBits) - 1U;
+    const auto both = static_cast<std::uint8_t>((i >> kBits) & i & kMask);
     ColourClass c = ColourClass::kOther;
     if ((both & kBallBit) != 0) {
       c = ColourClass::kBall;
     } else if ((both & kLineBit) != 0) {
       c = ColourClass::kLine;
-    } else if ((both & kFieldBit) != 0) {
+    } else if ((both & (kFieldBit | kPaleBit)) != 0) {
       c = ColourClass::kField;
     }
     combine_[i] = static_cast<std::uint8_t>(c);

@@ -305,8 +305,21 @@ void draw_result(cv::Mat& bgr, const VisionResult& r, const hal::CameraIntrinsic
       if (px) cv::circle(bgr, pt(*px), 2, {255, 0, 255}, cv::FILLED);
     }
   }
-  if (r.ball.seen) {
+  // Every ball (orange: one); an unverified candidate thinner.
+  for (std::size_t i = 0; i < r.balls.count; ++i) {
+    const BallDetection& b = r.balls.balls[i];
+    cv::circle(bgr, pt(b.centre), static_cast<int>(std::lround(b.radius_px)) + 2, {0, 140, 255}, b.verified ? 2 : 1);
+  }
+  if (r.balls.count == 0 && r.ball.seen) {
     cv::circle(bgr, pt(r.ball.centre), static_cast<int>(std::lround(r.ball.radius_px)) + 2, {0, 140, 255}, 2);
+  }
+  // Robots: the expected box (cyan; thin when unverified) and the foot point.
+  for (std::size_t i = 0; i < r.robots.count; ++i) {
+    const RobotDetection& d = r.robots.robots[i];
+    const cv::Rect box(static_cast<int>(std::lround(d.left)), static_cast<int>(std::lround(d.top)),
+                       static_cast<int>(std::lround(d.width)), static_cast<int>(std::lround(d.height)));
+    cv::rectangle(bgr, box, {255, 255, 0}, d.verified ? 2 : 1);
+    cv::circle(bgr, pt(d.foot), 4, {255, 255, 0}, cv::FILLED);
   }
 }
 

@@ -8,8 +8,13 @@
 // would have, r = fx·R / depth (the ray meets the plane z = R at the ball's centre); a run is a
 // candidate when its length is 0.6–1.6 × 2r. A run that is too long (a ball in front of a robot's
 // feet or on a line seen lengthwise) gives a candidate at its bottom. Each candidate is re-centred
-// along its row and column; candidates closer than r to a better one are merged. They are ranked by
-// how well their extent matches 2r.
+// along its row and column, then refined on its outline: 16 rays from the centre walk the class
+// image to the first two field samples; rays that end within `max_extent` × r give outline points
+// (rays running on into a line, a robot or the image's border give none), and a circle of the
+// expected radius is fitted to them (when ≥ `min_outline_points`). Candidates closer than r to a
+// better one are merged. They are ranked (BallCandidate::rank) by how well their extent matches
+// 2r, how round their outline is and, most, by the contrast inside: the black patches on white
+// that a robot's foot, a line crossing or a white blob lacks.
 //
 // Verification: the best `max_verified` candidates each get a window of `window_diameters` × 2r
 // image px resampled to the model's window, a HOG descriptor and an SVM score; a candidate is a
@@ -39,6 +44,7 @@ struct BwBallParams {
   double max_extent = 1.6;
   double window_diameters = 1.6;   // HOG window side / expected ball diameter
   double merge_radii = 1.0;        // candidates closer than this × r merge
+  int min_outline_points = 6;      // of 16 rays, for the outline to re-centre a candidate
 };
 
 /// Up to kMaxBalls balls, best first, and what the detector did.
@@ -55,6 +61,9 @@ struct BallCandidate {
   hal::Pixel centre{};
   double radius = 0.0;    // expected, px (camera model)
   double extent = 0.0;    // how well the blob's extent matches the expected diameter (0..1]
+  double roundness = 0.0; // share of the rays ending on an outline, × how well it fits the circle
+  double contrast = 0.0;  // (bright − dark) / bright inside: the black patches on white
+  [[nodiscard]] double rank() const noexcept { return (0.5 + extent) * (0.25 + roundness) * contrast * contrast; }
 };
 
 class BwBallDetector {
@@ -78,10 +87,17 @@ class BwBallDetector {
  private:
   using Candidate = BallCandidate;
   void add(const Candidate& c) noexcept;
+  struct Outline {
+    hal::Pixel centre{};     // of the circle of the given radius best fitting the outline
+    double roundness = 0.0;  // 0 when too few rays end on the field (centre unchanged)
+  };
+  [[nodiscard]] Outline fit_outline(const ClassImage& classes, const hal::Pixel& centre, double radius) noexcept;
 
   BwBallParams params_;
   std::array<Candidate, kMaxBallCandidates> cands_{};
   std::size_t count_ = 0;
+  std::array<hal::RobotPoint, 16> outline_{};
+  std::array<int, 16> outline_index_{};
 };
 
 /// The HOG window for a ball of image radius `radius_px` centred at `centre` (the detector and

@@ -65,6 +65,11 @@ struct AdaptiveColourParams {
   double cone_t_min = 0.35;
   double cone_t_max = 2.5;
   double cone_slope = 0.2;
+  // Shade scales chroma with brightness (t ≈ Y / field Y). Field chroma paler than pale_t of the
+  // field's (grey with a tint: a ball's white, a robot's shell, bluish white balance) is field only
+  // where the pixel is darker than pale_y_ratio × the local field Y, i.e. where it could be shade.
+  double pale_t = 0.6;
+  double pale_y_ratio = 0.85;
   int field_y_below = 80;             // field: Y ≥ local field Y − max(this, k·spread) (no upper
   double field_y_k = 3.0;             // bound: bright, saturated carpet is sunlit field, not line)
   int line_margin = 28;               // line: Y ≥ local field Y + max(line_margin, k·spread, ratio·Y)
@@ -150,7 +155,7 @@ struct FieldChromaRule {
   int fx = 0, fy = 0;       // field chroma − neutral
   long f2 = 0;              // |f|²
   int tolerance = 0;        // box half-width
-  long t_min256 = 0, t_max256 = 0, slope256 = 0, tol_f256 = 0;
+  long t_min256 = 0, t_max256 = 0, slope256 = 0, tol_f256 = 0, pale_t256 = 0;
   int line_max_chroma = 0;
 
   FieldChromaRule() = default;
@@ -162,6 +167,11 @@ struct FieldChromaRule {
     const long dot = cx * fx + cy * fy;
     const long cross = std::labs(cx * fy - cy * fx);
     return dot * 256 >= t_min256 * f2 && dot * 256 <= t_max256 * f2 && cross * 256 <= tol_f256 + slope256 * dot;
+  }
+  /// Field chroma, but paler than pale_t of the field's (shade, or a tinted grey).
+  [[nodiscard]] bool pale(int u, int v) const noexcept {
+    const long dot = static_cast<long>(u - 128) * fx + static_cast<long>(v - 128) * fy;
+    return dot * 256 < pale_t256 * f2 && field(u, v);
   }
   [[nodiscard]] bool unsaturated(int u, int v) const noexcept {
     return std::abs(u - 128) <= line_max_chroma && std::abs(v - 128) <= line_max_chroma;
@@ -181,7 +191,7 @@ class AdaptiveClassifier {
   /// The rule itself, exactly as the tables apply it up to the chroma bins' quantisation
   /// (the chroma tests use the bin's centre).
   [[nodiscard]] ColourClass classify(std::uint8_t y, std::uint8_t u, std::uint8_t v, int cell) const noexcept {
-    return static_cast<ColourClass>(combine_[static_cast<std::size_t>(chroma_[chroma_index(u, v)] << 3 | luma_[cell_offset(cell) + y])]);
+    return static_cast<ColourClass>(combine_[static_cast<std::size_t>(chroma_[chroma_index(u, v)] << kBits | luma_[cell_offset(cell) + y])]);
   }
   /// Cell (row-major in the 8 × 8 grid) of pixel (x, y).
   [[nodiscard]] int cell_of(int x, int y) const noexcept {
@@ -205,12 +215,15 @@ class AdaptiveClassifier {
     const auto c = static_cast<std::size_t>(cell);
     if (params_.ball.contains({y, u, v})) return ColourClass::kBall;
     if (y >= line_y_[c] && rule_.unsaturated(u, v)) return ColourClass::kLine;
-    if (y >= field_lo_[c] && rule_.field(u, v)) return ColourClass::kField;
+    if (y >= field_lo_[c] && rule_.field(u, v) && (y * 256L <= pale_y256_[c] || !rule_.pale(u, v))) return ColourClass::kField;
     return ColourClass::kOther;
   }
 
-  // Bits of the chroma and luminance tables.
-  static constexpr std::uint8_t kFieldBit = 1, kLineBit = 2, kBallBit = 4;
+  // Bits of the chroma and luminance tables; a class is the combination table's entry at
+  // chroma bits << kBits | luminance bits. Pale: the chroma is pale field chroma / the pixel is
+  // dark enough for that to be shade.
+  static constexpr std::uint8_t kFieldBit = 1, kLineBit = 2, kBallBit = 4, kPaleBit = 8;
+  static constexpr int kBits = 4;
 
  private:
   AdaptiveColourParams params_;
@@ -218,9 +231,10 @@ class AdaptiveClassifier {
   int height_ = 1;
   std::array<std::uint8_t, 1U << (2 * kChromaBits)> chroma_{};
   std::array<std::uint8_t, kColourCells * 256> luma_{};
-  std::array<std::uint8_t, 64> combine_{};
+  std::array<std::uint8_t, 1U << (2 * kBits)> combine_{};
   std::array<int, kColourCells> line_y_{};
   std::array<int, kColourCells> field_lo_{};
+  std::array<long, kColourCells> pale_y256_{};  // pale field chroma is field at Y·256 ≤ this
   FieldChromaRule rule_;
 };
 

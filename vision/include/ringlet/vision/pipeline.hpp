@@ -63,7 +63,7 @@ struct VisionConfig {
   // classified, scan lines twice as far apart, half the trials; 2 = least. The HOG classifiers go
   // first: fewer candidates classified at level 1, none at level 2.
   std::array<DegradeProfile, kDegradeLevels> degrade{{
-      {1, 3, -1, -1, 4, -1, -1, 3, 3},
+      {1, 3, -1, -1, 4, -1, -1, 4, 3},
       {2, 4, 15, 6, 6, 5, 20, 2, 1},
       {2, 8, 8, 4, 8, 3, 10, 0, 0},
   }};
