@@ -29,6 +29,9 @@ void horizontal_extent(const ClassImage& c, int x, int y, int reach, int& left, 
   while (right + s < c.width() && (right + s) - x <= reach && non_field(c, right + s, y)) right += s;
 }
 
+constexpr int kContrastGrid = 6;  // 6 × 6 samples, those inside 0.7 r (28) read
+constexpr long kContrastSamples = kContrastGrid * kContrastGrid;
+
 // 16 unit directions, 22.5° apart (literals: the same on every host).
 constexpr double kC1 = 0.92387953251128674, kC2 = 0.70710678118654757, kC3 = 0.38268343236508978;
 constexpr std::array<std::array<double, 2>, 16> kRays{{{1, 0}, {kC1, kC3}, {kC2, kC2}, {kC3, kC1},
@@ -54,7 +57,7 @@ double BwBallDetector::expected_radius_px(const hal::CameraIntrinsics& k, const 
   const hal::Vec3 ray = hal::pixel_ray(k, pose, px);
   if (!(ray.z < -1e-12) || pose.position.z <= params_.radius_m) return 0.0;
   const double t = (params_.radius_m - pose.position.z) / ray.z;
-  const double depth = t * std::hypot(ray.x, ray.y, ray.z);
+  const double depth = t * std::sqrt(ray.x * ray.x + ray.y * ray.y + ray.z * ray.z);  // (3-argument hypot is slow)
   if (ground != nullptr) *ground = {pose.position.x + t * ray.x, pose.position.y + t * ray.y};
   return k.fx * params_.radius_m / std::max(depth, 1e-6);
 }
@@ -62,21 +65,26 @@ double BwBallDetector::expected_radius_px(const hal::CameraIntrinsics& k, const 
 BwBallDetector::Outline BwBallDetector::fit_outline(const ClassImage& classes, const hal::Pixel& centre, double radius) noexcept {
   const int s = classes.step();
   const int first = classes.first_row();
-  // The sampled grid point nearest (x, y); false outside the classified part of the image.
+  // The sampled grid point nearest (x, y); false outside the classified part of the image (the
+  // rounding is floor(· + ½), which is all that matters inside it).
+  const double inv_s = 1.0 / s;
   const auto grid = [&](double x, double y, int& gx, int& gy) {
-    gx = static_cast<int>(std::lround(x / s)) * s;
-    gy = first + static_cast<int>(std::lround((y - first) / s)) * s;
-    return gx >= 0 && gx < classes.width() && gy >= first && gy < classes.height();
+    const double fx = x * inv_s + 0.5, fy = (y - first) * inv_s + 0.5;
+    if (fx < 0.0 || fy < 0.0) return false;
+    gx = static_cast<int>(fx) * s;
+    gy = first + static_cast<int>(fy) * s;
+    return gx < classes.width() && gy < classes.height();
   };
   int cx = 0, cy = 0;
   if (!grid(centre.u, centre.v, cx, cy) || !non_field(classes, cx, cy)) return {centre, 0.0};
   const double reach = params_.max_extent * radius;
-  const double step = 0.5 * s;
+  const double step = 0.5 * s;  // half a sample: diagonal rays then see the outline more finely
   std::size_t n = 0;
   for (const auto& d : kRays) {
     bool field_before = false;
     for (double t = step; t <= reach; t += step) {
       int gx = 0, gy = 0;
+      ++refine_samples_;
       if (!grid(centre.u + t * d[0], centre.v + t * d[1], gx, gy)) break;  // the border: no outline
       const bool field = !non_field(classes, gx, gy);
       if (field && field_before) {  // two field samples in a row: the outline lies before them
@@ -107,7 +115,7 @@ double inner_contrast(const hal::FrameView& frame, const hal::Pixel& centre, dou
   std::array<int, 2> hi{-1, -1};
   std::array<int, 2> lo{256, 256};
   int n = 0;
-  constexpr int kGrid = 6;
+  constexpr int kGrid = kContrastGrid;
   for (int i = 0; i < kGrid; ++i) {
     for (int j = 0; j < kGrid; ++j) {
       const double dx = (2.0 * (i + 0.5) / kGrid - 1.0) * 0.7 * radius;
@@ -162,6 +170,7 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
                             const Deadline& deadline, BallList& out) noexcept {
   out = BallList{};
   count_ = 0;
+  refine_samples_ = 0;
   const int s = classes.step();
   const int col_stride = std::max(s, (std::max(stride, 1) + s - 1) / s * s);
   const int first = classes.first_row();
@@ -186,7 +195,15 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
     if (height > params_.max_extent * d) cy = cy_guess;
     double r2 = expected_radius_px(k, pose, {cx, cy});
     if (r2 < params_.min_radius_px) return;
-    const Outline outline = fit_outline(classes, {cx, cy}, r2);
+    // The neighbouring columns of a blob already outlined give the same candidate: not refined again.
+    for (std::size_t i = 0; i < count_; ++i) {
+      const Candidate& o = cands_[i];
+      if (o.roundness > 0.0 && std::abs(o.centre.u - cx) <= 0.5 * r2 && std::abs(o.centre.v - cy) <= 0.5 * r2) return;
+    }
+    // Only a blob with black on white inside is worth its outline (the costly part).
+    const double raw_contrast = inner_contrast(frame, {cx, cy}, r2);
+    refine_samples_ += kContrastSamples;
+    const Outline outline = raw_contrast >= params_.min_contrast ? fit_outline(classes, {cx, cy}, r2) : Outline{{cx, cy}, 0.0};
     const double r3 = expected_radius_px(k, pose, outline.centre);
     if (r3 >= params_.min_radius_px) {
       cx = outline.centre.u;
@@ -195,6 +212,7 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
     }
     const double e = match(std::min(width, params_.max_extent * 2.0 * r2), 2.0 * r2) *
                      match(std::min(height, params_.max_extent * 2.0 * r2), 2.0 * r2);
+    refine_samples_ += kContrastSamples;
     add({{cx, cy}, r2, e, outline.roundness, inner_contrast(frame, {cx, cy}, r2)});
   };
 
@@ -222,6 +240,7 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
     }
   }
   out.candidates = static_cast<int>(count_);
+  out.refine_samples = static_cast<int>(refine_samples_);
   // Rank by extent match and roundness; insertion sort (stable, and std::stable_sort may allocate a buffer).
   for (std::size_t i = 1; i < count_; ++i) {
     const Candidate c = cands_[i];

@@ -101,7 +101,8 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
         r.balls.count = 1;
       }
     }
-    r.work.ball_samples = ground_pixels / (level.ball_stride * level.ball_stride);
+    // The seeds, plus what the black-and-white ball's outlines and contrasts read.
+    r.work.ball_samples = ground_pixels / (level.ball_stride * level.ball_stride) + r.balls.refine_samples;
     lap(Stage::kBall);
   }
   // The robot stage needs its classifier: unverified candidates (tall non-field runs) were robots

@@ -45,6 +45,7 @@ struct BwBallParams {
   double window_diameters = 1.6;   // HOG window side / expected ball diameter
   double merge_radii = 1.0;        // candidates closer than this × r merge
   int min_outline_points = 6;      // of 16 rays, for the outline to re-centre a candidate
+  double min_contrast = 0.3;       // less inside (no black on white): not re-centred, ranked low
 };
 
 /// Up to kMaxBalls balls, best first, and what the detector did.
@@ -54,6 +55,7 @@ struct BallList {
   int candidates = 0;      // after merging
   int classified = 0;      // candidates given to the SVM
   int classifications_cut = 0;  // candidates not classified because the deadline passed
+  int refine_samples = 0;  // class-image and luminance samples the outlines and contrasts read (cost model)
 };
 
 /// A ball candidate before verification.
@@ -98,6 +100,7 @@ class BwBallDetector {
   std::size_t count_ = 0;
   std::array<hal::RobotPoint, 16> outline_{};
   std::array<int, 16> outline_index_{};
+  long refine_samples_ = 0;
 };
 
 /// The HOG window for a ball of image radius `radius_px` centred at `centre` (the detector and

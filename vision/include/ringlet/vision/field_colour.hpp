@@ -48,7 +48,8 @@ struct AdaptiveColourParams {
   int cluster_radius = 12;            // chroma codes (L∞) around the histogram peak giving the medians
   int field_max_u = 126;              // a field is green-ish: U and V not above these ...
   int field_max_v = 134;
-  int field_min_chroma = 8;           // ... and (128 − U) + (128 − V) at least this (grey is no field)
+  int field_min_chroma = 12;          // ... and (128 − U) + (128 − V) at least this (grey is no field,
+                                      // nor an olive-grey floor: 8 let one with (116, 130) pass)
   int smoothing = 128;                // /256: weight of this frame's estimate against the previous
   int reset_jump_y = 24;              // a change of field Y (or U/V) larger than this resets the
   int reset_jump_uv = 10;             // smoothed estimate to this frame's
