@@ -255,6 +255,11 @@ EvalReport run_evaluation(const EvalOptions& o) {
         balls.push_back({d.centre.u, d.centre.v, d.ground_valid, d.distance_m});
       }
       report.balls += score_balls(balls, f.meta.balls, o.ball_match);
+      std::vector<FoundBall> proposals;
+      if (o.vision.ball.mode == BallMode::kBlackWhite) {
+        for (const BallCandidate& c : pipeline->ball_candidates()) proposals.push_back({c.centre.u, c.centre.v, false, 0.0});
+      }
+      report.ball_proposals += score_balls(proposals, f.meta.balls, o.ball_match);
       std::vector<FoundRobot> robots;
       for (std::size_t r = 0; r < result.robots.count; ++r) {
         const RobotDetection& d = result.robots.robots[r];

@@ -93,6 +93,8 @@ struct EvalReport {
   std::string ball_model;            // file, or "none"
   std::string robot_model;
   ObjectCounts balls{};
+  ObjectCounts ball_proposals{};     // every black-and-white ball candidate scored as a detection:
+                                     // its recall is the share of expected balls proposed at all
   ObjectCounts robots{};
   BallMatchParams ball_match{};
   RobotMatchParams robot_match{};

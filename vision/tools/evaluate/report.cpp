@@ -90,6 +90,11 @@ void print_objects(const EvalReport& r, std::ostream& os) {
        << fmt("%.1f", 100.0 * c.error_max) << " % (" << c.errors << ")\n";
   };
   print(r.balls, "relative distance error");
+  if (r.ball_mode == "bw") {
+    os << "  proposed: " << r.ball_proposals.recalled << " of the " << r.ball_proposals.expected
+       << " expected balls have a candidate (" << fmt("%.3f", r.ball_proposals.recall())
+       << ": the most the classifier could recall)\n";
+  }
   os << "robots (model " << r.robot_model << "): a match is a foot point within max(" << rm.foot_share
      << " x box width, " << rm.min_foot_px << " px) or box IoU >= " << rm.min_iou << "; expected within "
      << rm.max_distance_m << " m, foot in the image, >= " << rm.min_visible * 100.0 << " % visible\n";
@@ -181,6 +186,8 @@ nlohmann::json report_json(const EvalReport& r) {
           {"ball_model", r.ball_model},
           {"robot_model", r.robot_model},
           {"balls", object_json(r.balls, "distance_error")},
+          {"ball_proposals", {{"expected", r.ball_proposals.expected}, {"recalled", r.ball_proposals.recalled},
+                              {"recall", r.ball_proposals.recall()}, {"candidates", r.ball_proposals.detections}}},
           {"robots", object_json(r.robots, "foot_distance_error")},
           {"ball_match", {{"centre_share", r.ball_match.centre_share}, {"min_centre_px", r.ball_match.min_centre_px},
                           {"max_distance_m", r.ball_match.max_distance_m}, {"min_visible", r.ball_match.min_visible}}},

@@ -144,6 +144,9 @@ class VisionPipeline {
   [[nodiscard]] const VisionResult& result() const noexcept { return result_; }
   [[nodiscard]] const ClassImage& classes() const noexcept { return classes_; }
   [[nodiscard]] const CandidateBuffer& candidates() const noexcept { return candidates_; }
+  /// The black-and-white ball detector's candidates of the last frame its stage ran on, best ranked first (the
+  /// evaluation measures how many true balls get one at all: the ceiling of the ball's recall).
+  [[nodiscard]] std::span<const BallCandidate> ball_candidates() const noexcept { return bw_ball_.candidates(); }
   [[nodiscard]] const VisionConfig& config() const noexcept { return config_; }
   [[nodiscard]] const ColourTable& table() const noexcept { return table_; }
   [[nodiscard]] const AdaptiveClassifier& adaptive() const noexcept { return adaptive_; }
