@@ -31,6 +31,8 @@ void horizontal_extent(const ClassImage& c, int x, int y, int reach, int& left, 
 
 constexpr int kContrastGrid = 6;  // 6 × 6 samples, those inside 0.7 r (28) read
 constexpr long kContrastSamples = kContrastGrid * kContrastGrid;
+// Indices 0..15: the outline's points are all used, in ray order.
+constexpr std::array<int, 16> kFirstSixteen{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
 
 // 16 unit directions, 22.5° apart (literals: the same on every host).
 constexpr double kC1 = 0.92387953251128674, kC2 = 0.70710678118654757, kC3 = 0.38268343236508978;
@@ -89,7 +91,6 @@ BwBallDetector::Outline BwBallDetector::fit_outline(const ClassImage& classes, c
       const bool field = !non_field(classes, gx, gy);
       if (field && field_before) {  // two field samples in a row: the outline lies before them
         outline_[n] = {centre.u + (t - 1.5 * step) * d[0], centre.v + (t - 1.5 * step) * d[1]};
-        outline_index_[n] = static_cast<int>(n);
         ++n;
         break;
       }
@@ -97,7 +98,7 @@ BwBallDetector::Outline BwBallDetector::fit_outline(const ClassImage& classes, c
     }
   }
   if (static_cast<int>(n) < params_.min_outline_points) return {centre, 0.0};
-  const IndexedPoints pts{outline_, std::span<const int>(outline_index_.data(), n)};
+  const IndexedPoints pts{outline_, std::span<const int>(kFirstSixteen.data(), n)};
   const auto fit = fit_circle_geometric(pts, {{centre.u, centre.v}, radius}, true, 5);
   if (!fit || std::hypot(fit->centre.x - centre.u, fit->centre.y - centre.v) > radius) return {centre, 0.0};
   // Roundness: the share of rays with an outline, less for outline points off the circle (RMS
@@ -205,15 +206,17 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
     refine_samples_ += kContrastSamples;
     const Outline outline = raw_contrast >= params_.min_contrast ? fit_outline(classes, {cx, cy}, r2) : Outline{{cx, cy}, 0.0};
     const double r3 = expected_radius_px(k, pose, outline.centre);
-    if (r3 >= params_.min_radius_px) {
+    double contrast = raw_contrast;
+    if (r3 >= params_.min_radius_px && (outline.centre.u != cx || outline.centre.v != cy)) {
       cx = outline.centre.u;
       cy = outline.centre.v;
       r2 = r3;
+      contrast = inner_contrast(frame, {cx, cy}, r2);  // the outline moved the ball: look again
+      refine_samples_ += kContrastSamples;
     }
     const double e = match(std::min(width, params_.max_extent * 2.0 * r2), 2.0 * r2) *
                      match(std::min(height, params_.max_extent * 2.0 * r2), 2.0 * r2);
-    refine_samples_ += kContrastSamples;
-    add({{cx, cy}, r2, e, outline.roundness, inner_contrast(frame, {cx, cy}, r2)});
+    add({{cx, cy}, r2, e, outline.roundness, contrast});
   };
 
   for (int x = 0; x < classes.width(); x += col_stride) {
@@ -241,7 +244,7 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
   }
   out.candidates = static_cast<int>(count_);
   out.refine_samples = static_cast<int>(refine_samples_);
-  // Rank by extent match and roundness; insertion sort (stable, and std::stable_sort may allocate a buffer).
+  // Rank (BallCandidate::rank); insertion sort (stable, and std::stable_sort may allocate a buffer).
   for (std::size_t i = 1; i < count_; ++i) {
     const Candidate c = cands_[i];
     std::size_t j = i;

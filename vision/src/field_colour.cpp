@@ -33,6 +33,12 @@ std::uint8_t blend(std::uint8_t s, std::uint8_t m, int w) noexcept {
   return clamp_byte(static_cast<long>(s) + (d * w + (d >= 0 ? 128 : -128)) / 256);
 }
 
+// Green-ish chroma: within the field limits (widened by slack) and at least field_min_chroma from
+// neutral. One rule for the histogram's bins, the cluster's samples and the estimate itself.
+bool green_ish(int u, int v, const AdaptiveColourParams& p, int slack = 0) noexcept {
+  return u <= p.field_max_u + slack && v <= p.field_max_v + slack && (128 - u) + (128 - v) >= p.field_min_chroma;
+}
+
 }  // namespace
 
 FieldChromaRule::FieldChromaRule(const FieldColourEstimate& e, const AdaptiveColourParams& p) noexcept
@@ -44,6 +50,7 @@ FieldChromaRule::FieldChromaRule(const FieldColourEstimate& e, const AdaptiveCol
   slope256 = std::lround(p.cone_slope * 256.0);
   tol_f256 = std::lround(tolerance * std::sqrt(static_cast<double>(f2)) * 256.0);
   pale_t256 = std::lround(p.pale_t * 256.0);
+  pale_ratio256 = std::lround(p.pale_y_ratio * 256.0);
   line_max_chroma = p.line_max_chroma;
 }
 
@@ -107,9 +114,7 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
   // the field may cover more of the view than the carpet does.
   constexpr int kBinWidth = 1 << (8 - kHistBits);
   const auto green_bin = [&](int bu, int bv) {
-    const int u = bu * kBinWidth + kBinWidth / 2, v = bv * kBinWidth + kBinWidth / 2;
-    return u <= params.field_max_u + kBinWidth / 2 && v <= params.field_max_v + kBinWidth / 2 &&
-           (128 - u) + (128 - v) >= params.field_min_chroma;
+    return green_ish(bu * kBinWidth + kBinWidth / 2, bv * kBinWidth + kBinWidth / 2, params, kBinWidth / 2);
   };
   for (int bu = 0; bu < kHistBins; ++bu) {
     for (int bv = 0; bv < kHistBins; ++bv) {
@@ -140,15 +145,12 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
 
   // The cluster's members (green-ish chroma within cluster_radius of the centre: the grey of a
   // floor or of robots next to a dull carpet stays out): Y, U, V medians, spreads.
-  const auto green_sample = [&](const Yuv& p) {
-    return p.u <= params.field_max_u && p.v <= params.field_max_v && (128 - p.u) + (128 - p.v) >= params.field_min_chroma;
-  };
   const int r = std::max(params.cluster_radius, 1);
   std::array<std::uint16_t, 256> hy{}, hu{}, hv{};
   int members = 0;
   for (int i = 0; i < n; ++i) {
     const Yuv& p = samples_[static_cast<std::size_t>(i)].yuv;
-    if (std::abs(p.u - cu) > r || std::abs(p.v - cv) > r || !green_sample(p)) continue;
+    if (std::abs(p.u - cu) > r || std::abs(p.v - cv) > r || !green_ish(p.u, p.v, params)) continue;
     ++hy[p.y];
     ++hu[p.u];
     ++hv[p.v];
@@ -163,14 +165,13 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
   e.v = clamp_byte(v50);
   e.y_spread = clamp_byte((y75 - y25 + 1) / 2);
   e.uv_spread = clamp_byte((std::max(u75 - u25, v75 - v25) + 1) / 2);
-  const bool green = e.u <= params.field_max_u && e.v <= params.field_max_v &&
-                     (128 - e.u) + (128 - e.v) >= params.field_min_chroma;
+  const bool green = green_ish(e.u, e.v, params);
 
   // Every sample of field chroma (the classifier's rule: shaded and sunlit carpet too; pale field
   // chroma only where darker than the field) counts as field: its share is the confidence, and per
   // cell its median Y is the local field luminance.
   const FieldChromaRule rule(e, params);
-  const long pale_y256 = std::lround(params.pale_y_ratio * 256.0) * e.y;
+  const long pale_y256 = rule.pale_y256(e.y);
   for (auto& h : cell_hist_) h.fill(0);
   std::array<int, kColourCells> cell_n{};
   int field = 0;
@@ -265,7 +266,7 @@ void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int heig
     const int field_lo = fy - std::max(p.field_y_below, static_cast<int>(std::lround(p.field_y_k * spread_y)));
     line_y_[static_cast<std::size_t>(c)] = line_y;
     field_lo_[static_cast<std::size_t>(c)] = field_lo;
-    const long pale_y256 = std::lround(p.pale_y_ratio * 256.0) * fy;
+    const long pale_y256 = rule_.pale_y256(fy);
     pale_y256_[static_cast<std::size_t>(c)] = pale_y256;
     std::uint8_t* luma = luma_.data() + cell_offset(c);
     for (int y = 0; y < 256; ++y) {

@@ -99,7 +99,6 @@ class BwBallDetector {
   std::array<Candidate, kMaxBallCandidates> cands_{};
   std::size_t count_ = 0;
   std::array<hal::RobotPoint, 16> outline_{};
-  std::array<int, 16> outline_index_{};
   long refine_samples_ = 0;
 };
 

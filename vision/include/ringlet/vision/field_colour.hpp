@@ -157,6 +157,7 @@ struct FieldChromaRule {
   long f2 = 0;              // |f|²
   int tolerance = 0;        // box half-width
   long t_min256 = 0, t_max256 = 0, slope256 = 0, tol_f256 = 0, pale_t256 = 0;
+  long pale_ratio256 = 0;   // pale_y_ratio · 256
   int line_max_chroma = 0;
 
   FieldChromaRule() = default;
@@ -174,6 +175,8 @@ struct FieldChromaRule {
     const long dot = static_cast<long>(u - 128) * fx + static_cast<long>(v - 128) * fy;
     return dot * 256 < pale_t256 * f2 && field(u, v);
   }
+  /// Pale field chroma counts as field only where Y · 256 ≤ this (darker than pale_y_ratio × field_y).
+  [[nodiscard]] long pale_y256(int field_y) const noexcept { return pale_ratio256 * field_y; }
   [[nodiscard]] bool unsaturated(int u, int v) const noexcept {
     return std::abs(u - 128) <= line_max_chroma && std::abs(v - 128) <= line_max_chroma;
   }
