@@ -15,8 +15,9 @@ README.md marks its figures with HTML comments (invisible when rendered):
                                            host time and progress lines are masked).
 
 KEY is SOURCE.FIGURE. SOURCE is the stem of a shipped configuration (firmware/config/SOURCE.toml),
-realtime_STEM (a few seconds of it on the real clock) or vision_eval_SEED (the vision evaluation);
-the last two are run by `tools/ringlet results` only. A number is
+realtime_STEM (a few seconds of it on the real clock), vision_eval_SEED (the vision evaluation;
+these two are run by `tools/ringlet results` only) or plan_bench_MAP (`ringlet-plan-bench replan`
+on planning/maps/MAP.map with its .scen: expansions are deterministic, so `check` runs it too). A number is
 compared at the precision it is written with: "24.2" matches 24.16, "89" matches 89.3. A value
 may be a code span (<!--fig:KEY-->`aa41...`<!--/fig-->; inside the backticks a comment would show).
 
@@ -142,6 +143,40 @@ def eval_figures(report):
 
 def is_eval_source(source):
     return source.startswith("vision_eval_")
+
+
+PLAN_PREFIX = "plan_bench_"
+
+
+def is_plan_source(source):
+    return source.startswith(PLAN_PREFIX)
+
+
+def plan_figures(report):
+    """(deterministic, measured) figures of one `ringlet-plan-bench replan --json` report."""
+    t = report["totals"]
+    det = {k: t[k] for k in ("problems", "reached", "replans", "dstar_lite_expansions", "astar_expansions",
+                             "expansion_ratio")}
+    meas = {k: t[k] for k in ("dstar_lite_seconds", "astar_seconds", "time_ratio")}
+    return det, meas
+
+
+def run_plan_bench(bench, maps_dir, source, report, svg=None):
+    """`ringlet-plan-bench replan` on the map a plan_bench_MAP source names: (exit code, report
+    JSON or None, the finished process, the command)."""
+    m = source[len(PLAN_PREFIX):]
+    cmd = [str(bench), "replan", str(Path(maps_dir) / f"{m}.map"), str(Path(maps_dir) / f"{m}.map.scen"),
+           "--json", str(report)]
+    if svg:
+        cmd += ["--svg", str(svg)]
+    if os.path.exists(report):
+        os.remove(report)
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    data = None
+    if p.returncode == 0 and os.path.exists(report):
+        with open(report, encoding="utf-8") as f:
+            data = json.load(f)
+    return p.returncode, data, p, cmd
 
 
 # ---------------------------------------------------------------------------------------------
@@ -420,12 +455,20 @@ def cmd_check(args):
     if not sources:
         raise BadInput(f"{args.readme}: no figure markers (<!--fig:KEY-->VALUE<!--/fig-->) to check")
     # Every name is checked before anything runs: a typo costs a second, not a mission.
-    configs = {}
+    configs, plans = {}, []
     for source in sources:
         if is_eval_source(source):
             n = sum(1 for m in markers if m.source == source and m.kind == "fig")
             print(f"-- {source}: {n} figures not checked here (the vision evaluation; "
                   f"`tools/ringlet results` checks them)")
+            continue
+        if is_plan_source(source):
+            first = min(m.line for m in markers if m.source == source)
+            if args.plan_bench is None or args.maps_dir is None:
+                raise BadInput(f"{name}:{first}: '{source}' needs --plan-bench and --maps-dir")
+            if not (Path(args.maps_dir) / f"{source[len(PLAN_PREFIX):]}.map").is_file():
+                raise BadInput(f"{name}:{first}: '{source}': {args.maps_dir} has no {source[len(PLAN_PREFIX):]}.map")
+            plans.append(source)
             continue
         config = Path(args.config_dir) / f"{source}.toml"
         if not config.is_file():
@@ -444,6 +487,13 @@ def cmd_check(args):
             continue
         figures[source] = firmware_figures(report)
         excerpts[source] = excerpt
+    for source in plans:
+        print(f"-- {source}: ringlet-plan-bench replan", flush=True)
+        rc, report, p, _ = run_plan_bench(args.plan_bench, args.maps_dir, source, Path(args.work) / f"{source}.json")
+        if report is None:
+            problems.append(f"{source}: ringlet-plan-bench exited {rc}:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
+            continue
+        figures[source] = plan_figures(report)
     for b in blocks:
         if b.source in excerpts:
             problems += check_block(b, excerpts[b.source], name)
@@ -470,6 +520,8 @@ def main(argv=None):
     c.add_argument("--ringlet", required=True, help="the firmware binary")
     c.add_argument("--config-dir", required=True, help="the shipped configurations (SOURCE.toml)")
     c.add_argument("--work", required=True, help="folder for the runs' reports")
+    c.add_argument("--plan-bench", help="ringlet-plan-bench, for plan_bench_MAP figures")
+    c.add_argument("--maps-dir", help="the maps plan_bench_MAP names (planning/maps)")
     args = ap.parse_args(argv)
     try:
         if not os.access(args.ringlet, os.X_OK) or not os.path.isfile(args.ringlet):

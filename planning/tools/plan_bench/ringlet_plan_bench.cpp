@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -90,8 +91,9 @@ int run_replan(const Options& o) {
                                {"astar_expansions", r.astar_expansions}, {"dstar_lite_seconds", r.dstar_seconds},
                                {"astar_seconds", r.astar_seconds}});
     if (i == 0 && !o.svg_out.empty())
-      write_file(o.svg_out, bench::replan_svg(map, r, o.replan, o.map + ", " + o.scen + " line " + std::to_string(r.line) +
-                                                                 ": first plan dashed, driven path solid, obstacles seen dark"));
+      write_file(o.svg_out, bench::replan_svg(map, r, o.replan,
+                                              std::filesystem::path(o.scen).filename().string() + ":" + std::to_string(r.line) +
+                                                  ": first plan dashed, path driven solid, obstacles seen dark"));
   }
   std::cerr << "\n";
   const double ratio = d_exp > 0 ? static_cast<double>(a_exp) / static_cast<double>(d_exp) : 0.0;
