@@ -46,7 +46,10 @@ hal::Pose2 OccupancyGrid::region_centre(int region) const noexcept {
 
 bool OccupancyGrid::mark(double wx, double wy) noexcept {
   int cx = 0, cy = 0;
-  if (!cell_of(wx, wy, cx, cy)) return false;
+  return cell_of(wx, wy, cx, cy) && mark_cell(cx, cy);
+}
+
+bool OccupancyGrid::mark_cell(int cx, int cy) noexcept {
   std::uint8_t& cell = cells_[static_cast<std::size_t>(cy * config_.width_cells + cx)];
   if (cell != 0) return false;  // an occupied cell stays occupied: the obstacle has no effect
   cell = 1;

@@ -17,7 +17,7 @@ double RegionGraph::speed(int v, int k) const noexcept {
   RegionTransition t;
   t.from = v;
   t.to = w;
-  t.from_occupied = map_.region_count(v);
+  t.from_occupied = v == robot_region_ ? 0 : map_.region_count(v);
   t.to_occupied = map_.region_count(w);
   t.direction = k;
   t.distance = map_.config().region_size() * (is_diagonal(k) ? kSqrt2 : 1.0);

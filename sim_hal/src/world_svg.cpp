@@ -23,6 +23,8 @@ constexpr double kGoalRadiusM = 0.3;  // the usual goal tolerance, so "reached" 
 
 constexpr const char* kObstacleFill = "#4a4a4a";
 constexpr const char* kTrajectoryStroke = "#1f5fd1";
+constexpr const char* kPlanStroke = "#e07b00";
+constexpr const char* kOccupiedFill = "#8e2a1e";
 constexpr const char* kGoalColour = "#1e8c4a";
 constexpr const char* kStartFill = "#7b3fb5";
 constexpr const char* kCollisionStroke = "#d62020";
@@ -41,7 +43,7 @@ class SvgPicture {
 
   std::string draw() {
     const double width = kWorldWidthPx + 2.0 * kMarginPx;
-    const double height = kMarginPx + world_px_height() + kFooterPx;
+    const double height = kMarginPx + world_px_height() + kFooterPx + (overlay_.plans.cell > 0.0 ? 24.0 : 0.0);
     text_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"";
     attr("width", width);
     attr("height", height);
@@ -57,6 +59,8 @@ class SvgPicture {
     markings();
     obstacles();
     ball();
+    plan_map();
+    plans();
     trajectory();
     goals();
     start_pose();
@@ -243,6 +247,46 @@ class SvgPicture {
            "fill=\"#ff8c1a\" stroke=\"#8a4500\" stroke-width=\"1\"");
   }
 
+  // The planner's map: its region grid (faint lines) and every cell it marked occupied.
+  void plan_map() {
+    const hal::PlanPicture& m = overlay_.plans;
+    if (!(m.cell > 0.0) || m.width_cells <= 0 || m.height_cells <= 0) return;
+    const double region = m.cell * std::max(m.region_cells, 1);
+    const double x0 = m.origin.x, y0 = m.origin.y;
+    const double x1 = x0 + m.cell * m.width_cells, y1 = y0 + m.cell * m.height_cells;
+    const std::string_view grid = "stroke=\"#ffffff\" stroke-opacity=\"0.35\" stroke-width=\"0.6\"";
+    for (int i = 0; i * region <= x1 - x0 + 1e-9; ++i) line("region-grid", px(x0 + i * region), py(y0), px(x0 + i * region), py(y1), grid);
+    for (int j = 0; j * region <= y1 - y0 + 1e-9; ++j) line("region-grid", px(x0), py(y0 + j * region), px(x1), py(y0 + j * region), grid);
+    const double side = m.cell * scale_;
+    const std::string style = std::string("fill=\"") + kOccupiedFill + "\" fill-opacity=\"0.85\"";
+    for (const std::uint32_t c : m.occupied) {
+      const double cx = x0 + (c % static_cast<std::uint32_t>(m.width_cells)) * m.cell;
+      const double cy = y0 + (c / static_cast<std::uint32_t>(m.width_cells)) * m.cell;
+      rect("occupied", px(cx), py(cy + m.cell), side, side, style);
+    }
+  }
+
+  // The first plan solid, every later one (a replan, or the plan to the next goal) faded.
+  void plans() {
+    const hal::PlanPicture& m = overlay_.plans;
+    std::size_t begin = 0;
+    for (std::size_t i = 0; i < m.plan_ends.size(); ++i) {
+      const std::size_t end = std::min<std::size_t>(m.plan_ends[i], m.plan_points.size());
+      if (end > begin + 1) {
+        text_ += "<polyline class=\"plan\" points=\"";
+        for (std::size_t k = begin; k < end; ++k) {
+          if (k > begin) text_ += ' ';
+          point(px(m.plan_points[k].x), py(m.plan_points[k].y));
+        }
+        text_ += "\" fill=\"none\" stroke=\"";
+        text_ += kPlanStroke;
+        text_ += i == 0 ? "\" stroke-width=\"2.5\" stroke-opacity=\"0.95\"" : "\" stroke-width=\"1.5\" stroke-opacity=\"0.35\"";
+        text_ += " stroke-dasharray=\"6 4\" stroke-linejoin=\"round\"/>\n";
+      }
+      begin = end;
+    }
+  }
+
   void trajectory() {
     if (overlay_.trajectory.empty()) return;
     text_ += "<polyline class=\"trajectory\" points=\"";
@@ -321,6 +365,16 @@ class SvgPicture {
     x += step;
     cross_mark("legend", x, y, 6.0);
     label(x + 14.0, y + 4.5, "start", "", "collision");
+    if (overlay_.plans.cell > 0.0) {  // a second row: the planner's picture
+      const double y2 = y + 24.0;
+      double x2 = left + 8.0;
+      line("legend", x2 - 8.0, y2, x2 + 8.0, y2,
+           std::string("stroke=\"") + kPlanStroke + "\" stroke-width=\"2.5\" stroke-dasharray=\"6 4\"");
+      label(x2 + 14.0, y2 + 4.5, "start", "", "first plan (later plans faded)");
+      x2 += 2.0 * step;
+      rect("legend", x2 - 5.0, y2 - 5.0, 10.0, 10.0, std::string("fill=\"") + kOccupiedFill + '"');
+      label(x2 + 14.0, y2 + 4.5, "start", "", "occupied cell (planner's map; grid: regions)");
+    }
   }
 
   const World& world_;

@@ -54,7 +54,11 @@ TEST(ReactiveArcs, DistanceAlongAStraightArcToTheConfigurationSpace) {
   EXPECT_NEAR(distance_to_contact(0.0, {2.0, 0.3}, 0.5, 3.0), 1.6, 1e-12);  // 2 − √(0.25 − 0.09)
   EXPECT_EQ(distance_to_contact(0.0, {2.0, 0.6}, 0.5, 3.0), 3.0);            // passes beside it
   EXPECT_EQ(distance_to_contact(0.0, {-2.0, 0.0}, 0.5, 3.0), 3.0);           // behind
-  EXPECT_EQ(distance_to_contact(0.0, {0.3, 0.0}, 0.5, 3.0), 0.0);            // already inside
+  EXPECT_EQ(distance_to_contact(0.0, {0.3, 0.0}, 0.5, 3.0), 0.0);            // already inside, and closer ahead
+  EXPECT_EQ(distance_to_contact(0.0, {-0.3, 0.0}, 0.5, 3.0), 3.0);           // inside, but driving away
+  EXPECT_EQ(distance_to_contact(0.0, {0.0, 0.4}, 0.5, 3.0), 3.0);            // a wall alongside: straight on is the way out
+  EXPECT_EQ(distance_to_contact(1.0, {0.0, 0.4}, 0.5, 3.0), 3.0);            // turning right, away from it
+  EXPECT_EQ(distance_to_contact(-1.0, {0.3, 0.3}, 0.5, 3.0), 0.0);           // ahead on the left: turning left into it is not
   EXPECT_EQ(distance_to_contact(0.0, {9.0, 0.0}, 0.5, 3.0), 3.0);            // beyond the limit
 }
 
@@ -89,14 +93,29 @@ TEST(ReactiveArcs, ScanBeamsBecomeRobotFramePointsAndClearancesTakeTheNearest) {
   EXPECT_NEAR(c[0], distance_to_contact(-2.0, o.point[0], 0.5, distance_to_contact(-2.0, o.point[1], 0.5, 3.0)), 1e-12);
 }
 
+/// A waypoint `distance` away at `error` rad clockwise of the heading, in the robot frame.
+hal::RobotPoint at_error(double error, double distance) { return {distance * std::cos(error), -distance * std::sin(error)}; }
+
 TEST(ReactiveBehaviours, MoveToWaypointVotesAroundTheLinearLawsArc) {
   const ReactiveParams p = five_arcs();
   ArcVotes v;
-  move_to_waypoint_votes(p, 0.25, v);  // κ* = 0.5: halfway between the straight arc and κ = 1
+  EXPECT_NEAR(heading_error_to(at_error(0.25, 5.0)), 0.25, 1e-12);
+  move_to_waypoint_votes(p, at_error(0.25, 5.0), v);  // κ* = 0.5: halfway between the straight arc and κ = 1
   expect_first(v.vote, {0.0, 0.0, 0.5, 0.5, 0.0});
   expect_first(v.max_speed, {1.0, 1.0, 1.0, 1.0, 1.0});
-  move_to_waypoint_votes(p, -3.0, v);  // κ* = −6, clamped to −2
+  move_to_waypoint_votes(p, at_error(-3.0, 5.0), v);  // κ* = −6, clamped to −2
   expect_first(v.vote, {1.0, 0.0, 0.0, 0.0, 0.0});
+}
+
+TEST(ReactiveBehaviours, MoveToWaypointDrivesOutOfATurningCircleItCannotReach) {
+  const ReactiveParams p = five_arcs();  // tightest turn: radius 0.5 m
+  ArcVotes v;
+  // 0.3 m to the right, beside the robot: inside the right turning circle (centre (0, −0.5)).
+  move_to_waypoint_votes(p, {0.0, -0.3}, v);
+  expect_first(v.vote, {0.0, 0.0, 1.0, 0.0, 0.0});  // straight on, to get out
+  // 1.2 m to the right: outside it, so turn right as hard as the law says (κ* = 2 · π/2, clamped).
+  move_to_waypoint_votes(p, {0.0, -1.2}, v);
+  expect_first(v.vote, {0.0, 0.0, 0.0, 0.0, 1.0});
 }
 
 TEST(ReactiveBehaviours, AvoidObstaclesVotesAgainstArcsThatMeetObstaclesSoon) {
@@ -131,7 +150,7 @@ TEST(ReactiveBehaviours, SlowForTurnsKeepsTheYawRateBelowItsMaximum) {
 TEST(ReactiveArbiter, WeightedSumPicksTheArcAndTheSlowestLimitOnIt) {
   const ReactiveParams p = five_arcs();  // weights: waypoint 1, avoid 2, the speed behaviours 0
   std::array<ArcVotes, kBehaviours> v{};
-  move_to_waypoint_votes(p, 0.25, v[0]);
+  move_to_waypoint_votes(p, at_error(0.25, 5.0), v[0]);
   avoid_obstacles_votes(p, per_arc({3.0, 3.0, 1.5, 0.0, 3.0}), v[1]);
   maintain_headway_votes(p, per_arc({3.0, 0.85, 0.2, 0.1, 1.5}), v[2]);
   slow_for_congestion_votes(p, per_arc({3.0, 1.5, 0.0, 3.0, 3.0}), v[3]);
@@ -160,12 +179,30 @@ TEST(ReactiveArbiter, SymmetricTiesGoToTheLowerIndexAndWeightsMatter) {
   EXPECT_EQ(arbitrate(p, v).arc, 1);
 }
 
+TEST(ReactiveArbiter, AnArcNoBehaviourLetsTheRobotDriveIsChosenOnlyWhenAllAre) {
+  const ReactiveParams p = five_arcs();
+  std::array<ArcVotes, kBehaviours> v{};
+  for (auto& b : v) {
+    b.vote.fill(0.0);
+    b.max_speed.fill(1.0);
+  }
+  v[0].vote = per_arc({0.0, 0.5, 1.0, 0.5, 0.0});
+  v[2].max_speed = per_arc({1.0, 0.3, 0.0, 0.6, 1.0});  // headway: the straight arc ends at an obstacle
+  ArbiterDecision d = arbitrate(p, v);
+  EXPECT_EQ(d.arc, 1);  // the best arc that can be driven; κ = −1 and +1 tie: the lower index
+  EXPECT_DOUBLE_EQ(d.speed, 0.3);
+  v[2].max_speed.fill(0.0);  // boxed in
+  d = arbitrate(p, v);
+  EXPECT_EQ(d.arc, 2);
+  EXPECT_EQ(d.speed, 0.0);
+}
+
 TEST(ReactiveStep, SteersAroundAnObstacleStraightAheadAndSlows) {
   ReactiveParams p;  // the defaults: 25 arcs over ±2 /m, 0.45 m configuration space
   ObstaclePoints o;
   for (int k = -3; k <= 3; ++k) o.point[o.count++] = {1.2, 0.05 * k};  // a post 1.2 m ahead
   ReactiveStep s;
-  reactive_step(p, 0.0, o, s);
+  reactive_step(p, {5.0, 0.0}, o, s);
   const int straight = p.arcs.count / 2;
   EXPECT_NEAR(s.clearance[static_cast<std::size_t>(straight)], 1.2 - 0.45, 1e-12);
   EXPECT_NE(s.decision.arc, straight);
@@ -174,7 +211,7 @@ TEST(ReactiveStep, SteersAroundAnObstacleStraightAheadAndSlows) {
   EXPECT_LT(s.decision.speed, p.top_speed);
   // Nothing in the way: straight at the waypoint, full speed.
   ObstaclePoints none;
-  reactive_step(p, 0.0, none, s);
+  reactive_step(p, {5.0, 0.0}, none, s);
   EXPECT_EQ(s.decision.arc, straight);
   EXPECT_DOUBLE_EQ(s.decision.speed, p.top_speed);
 }

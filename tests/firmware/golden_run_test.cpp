@@ -84,6 +84,26 @@ constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0x2b3a1ae0c646d27a
 constexpr Golden kSplField{"spl_field.toml (4 s)", 0x5620a62c0b652a82ULL, 0x301f6e15597cee04ULL};
 constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x5620a62c0b652a82ULL, 0xbf1956b13f445ebdULL};
 
+// The hybrid controller (planner + arbiter under Navigate): the courtyard's whole mission, and the
+// first 30 s of P&B's test world (the dead end found and planned around) and of the woods.
+std::string navigation(const char* config, double seconds) {
+  const auto text = test::shipped_config_text(test::kShippedConfig.parent_path() / config);
+  return seconds > 0.0 ? with_line(text, "timeout_s", "timeout_s = " + std::to_string(seconds)) : text;
+}
+constexpr Golden kCourtyardNavigate{"courtyard_navigate.toml (whole mission)", 0x1497f9d3a5ccf273ULL, 0x5fd58917f428b3ebULL};
+constexpr Golden kPbTest{"pb_test.toml (30 s)", 0x434380399d21be1eULL, 0xd8b39aef1c1c38c2ULL};
+constexpr Golden kPbWoods{"pb_woods.toml (30 s)", 0x040f3c30a299764eULL, 0x6f6dbd611be22817ULL};
+
+TEST(GoldenRun, CourtyardNavigateMission) {
+  const auto s = run(navigation("courtyard_navigate.toml", 0.0), kCourtyardNavigate.name);
+  EXPECT_TRUE(s.complete);
+  expect_golden(s, kCourtyardNavigate);
+}
+
+TEST(GoldenRun, PbTestWorldFirst30s) { expect_golden(run(navigation("pb_test.toml", 30.0), kPbTest.name), kPbTest); }
+
+TEST(GoldenRun, PbWoodsFirst30s) { expect_golden(run(navigation("pb_woods.toml", 30.0), kPbWoods.name), kPbWoods); }
+
 TEST(GoldenRun, CourtyardMission) {
   const auto s = run(courtyard(), kCourtyard.name);
   EXPECT_TRUE(s.complete);

@@ -54,6 +54,17 @@ TEST(RegionGraph, NoCornerCuttingPastABlockedSide) {
   EXPECT_EQ(g.step_cost(g.vertex(0, 0), 2), 1'000'000'000);
 }
 
+TEST(RegionGraph, TheRobotsOwnRegionNeverKeepsItIn) {
+  OccupancyGrid m(map_3x3_regions());
+  const BinaryCostModel model({.max_occupied = 0, .top_speed = 1.0});
+  RegionGraph g(m, model);
+  occupy(m, 1, 1, 1);
+  EXPECT_EQ(g.step_cost(g.vertex(1, 1), 0), kInfiniteCost);
+  g.set_robot_region(g.vertex(1, 1));
+  EXPECT_EQ(g.step_cost(g.vertex(1, 1), 0), 1'000'000'000);  // out of it: allowed
+  EXPECT_EQ(g.step_cost(g.vertex(0, 1), 0), kInfiniteCost);  // into it: still full
+}
+
 class OddModel final : public CostModel {
  public:
   explicit OddModel(double s) : s_(s) {}

@@ -14,7 +14,7 @@ TEST(WbTypeList, NamesAndIdsAreTheSchemaOnes) {
                                        "Pose",       "LaserSummary", "FsmStatus",
                                        "FsmControl", "ExecutiveTiming", "Print",
                                        "FieldLines",  "HeadPosture",   "BodyState",    "MissionGoals",
-                                       "MissionStatus", "RobotDetections"};
+                                       "MissionStatus", "RobotDetections", "LaserScan", "Plan", "ArbiterCommand"};
   ASSERT_EQ(kTypeCount, names.size());
   for (std::size_t i = 0; i < kTypeCount; ++i) {
     EXPECT_EQ(kTypes[i].name, names[i]);

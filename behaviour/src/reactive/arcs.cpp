@@ -24,9 +24,34 @@ ObstaclePoints obstacles_from_scan(const hal::LaserScan& scan) noexcept {
   return o;
 }
 
+namespace {
+
+/// How close the arc comes to `p` within `limit` of travel (the start included).
+double closest_approach(double kappa, const hal::RobotPoint& p, double limit) noexcept {
+  const double here = std::hypot(p.x, p.y);
+  if (std::abs(kappa) < 1e-6) return p.x > 0.0 ? std::hypot(std::max(0.0, p.x - limit), p.y) : here;
+  const double R = 1.0 / std::abs(kappa);
+  const double qx = p.x, qy = (kappa > 0.0 ? p.y : -p.y) + R;
+  double phi = std::atan2(qx, qy);
+  if (phi < 0.0) phi += 2.0 * std::numbers::pi;
+  const double rho = std::hypot(qx, qy);
+  if (R * phi <= limit) return std::abs(rho - R);  // the arc passes the point nearest to p
+  // Else the nearest of the reachable arc is its end (the distance to p falls, then rises).
+  const double a = limit / R;
+  const double ex = R * std::sin(a), ey = (kappa > 0.0 ? -1.0 : 1.0) * R * (1.0 - std::cos(a));
+  return std::min(here, std::hypot(p.x - ex, p.y - ey));
+}
+
+}  // namespace
+
 double distance_to_contact(double kappa, const hal::RobotPoint& p, double radius, double limit) noexcept {
   const double r2 = radius * radius;
-  if (p.x * p.x + p.y * p.y <= r2) return 0.0;
+  if (p.x * p.x + p.y * p.y <= r2) {
+    // Already inside the point's configuration space (a late sighting, a wall alongside): only an
+    // arc that brings the robot closer still counts as touching it now; one that leads away is
+    // how to get out.
+    return closest_approach(kappa, p, limit) < std::sqrt(p.x * p.x + p.y * p.y) - 1e-6 ? 0.0 : limit;
+  }
   if (std::abs(kappa) < 1e-6) {  // straight ahead: the disc's near edge on the x axis
     if (std::abs(p.y) >= radius) return limit;
     const double d = p.x - std::sqrt(r2 - p.y * p.y);

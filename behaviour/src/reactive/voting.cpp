@@ -41,9 +41,15 @@ std::string ReactiveParams::validate() const {
   return {};
 }
 
-void move_to_waypoint_votes(const ReactiveParams& p, double heading_error, ArcVotes& out) noexcept {
+double heading_error_to(const hal::RobotPoint& w) noexcept { return std::atan2(-w.y, w.x); }
+
+void move_to_waypoint_votes(const ReactiveParams& p, const hal::RobotPoint& waypoint, ArcVotes& out) noexcept {
   reset(p, out);
-  const double target = std::clamp(p.waypoint_gain * heading_error, -p.arcs.max_curvature, p.arcs.max_curvature);
+  double target = std::clamp(p.waypoint_gain * heading_error_to(waypoint), -p.arcs.max_curvature, p.arcs.max_curvature);
+  // The tightest circle on the waypoint's side: centre (0, ∓R) in the robot frame (right: −R).
+  const double r = 1.0 / p.arcs.max_curvature;
+  const double cy = waypoint.y < 0.0 ? -r : r;
+  if (std::hypot(waypoint.x, waypoint.y - cy) < r) target = 0.0;
   for (int i = 0; i < p.arcs.count; ++i)
     out.vote[static_cast<std::size_t>(i)] = std::max(0.0, 1.0 - std::abs(p.arcs.curvature(i) - target) / p.vote_width);
 }
@@ -83,27 +89,41 @@ void slow_for_turns_votes(const ReactiveParams& p, ArcVotes& out) noexcept {
 
 ArbiterDecision arbitrate(const ReactiveParams& p, const std::array<ArcVotes, kBehaviours>& votes) noexcept {
   ArbiterDecision d;
+  PerArc speed{};
+  bool any_moving = false;
   for (int i = 0; i < p.arcs.count; ++i) {
     const auto k = static_cast<std::size_t>(i);
     double sum = 0.0;
-    for (int b = 0; b < kBehaviours; ++b) sum += p.weight[static_cast<std::size_t>(b)] * votes[static_cast<std::size_t>(b)].vote[k];
+    speed[k] = p.top_speed;
+    for (int b = 0; b < kBehaviours; ++b) {
+      const ArcVotes& v = votes[static_cast<std::size_t>(b)];
+      sum += p.weight[static_cast<std::size_t>(b)] * v.vote[k];
+      speed[k] = std::min(speed[k], v.max_speed[k]);
+    }
     d.total[k] = sum;
-    const bool better = d.arc < 0 || sum > d.total[static_cast<std::size_t>(d.arc)] ||
-                        (sum == d.total[static_cast<std::size_t>(d.arc)] &&
+    any_moving = any_moving || speed[k] > 0.0;
+  }
+  // A speed limit of 0 is a veto: an arc no behaviour lets the robot drive is not chosen while
+  // another can be driven (the most-voted arc may end at an obstacle: stopping there for ever is
+  // no choice). With every arc vetoed the most-voted one is chosen, at speed 0: the robot stops.
+  for (int i = 0; i < p.arcs.count; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (any_moving && !(speed[k] > 0.0)) continue;
+    const bool better = d.arc < 0 || d.total[k] > d.total[static_cast<std::size_t>(d.arc)] ||
+                        (d.total[k] == d.total[static_cast<std::size_t>(d.arc)] &&
                          std::abs(p.arcs.curvature(i)) < std::abs(p.arcs.curvature(d.arc)));
     if (better) d.arc = i;
   }
-  const auto best = static_cast<std::size_t>(d.arc);
   d.curvature = p.arcs.curvature(d.arc);
-  d.speed = p.top_speed;
-  for (const ArcVotes& v : votes) d.speed = std::min(d.speed, v.max_speed[best]);
+  d.speed = speed[static_cast<std::size_t>(d.arc)];
   return d;
 }
 
-void reactive_step(const ReactiveParams& p, double heading_error, const ObstaclePoints& obstacles, ReactiveStep& out) noexcept {
+void reactive_step(const ReactiveParams& p, const hal::RobotPoint& waypoint, const ObstaclePoints& obstacles,
+                   ReactiveStep& out) noexcept {
   clearances(p.arcs, obstacles, p.robot_radius + p.margin, p.lookahead, out.clearance);
   clearances(p.arcs, obstacles, p.robot_radius + p.margin + p.congestion_margin, p.lookahead, out.wide_clearance);
-  move_to_waypoint_votes(p, heading_error, out.votes[static_cast<std::size_t>(Behaviour::kMoveToWaypoint)]);
+  move_to_waypoint_votes(p, waypoint, out.votes[static_cast<std::size_t>(Behaviour::kMoveToWaypoint)]);
   avoid_obstacles_votes(p, out.clearance, out.votes[static_cast<std::size_t>(Behaviour::kAvoidObstacles)]);
   maintain_headway_votes(p, out.clearance, out.votes[static_cast<std::size_t>(Behaviour::kMaintainHeadway)]);
   slow_for_congestion_votes(p, out.wide_clearance, out.votes[static_cast<std::size_t>(Behaviour::kSlowForCongestion)]);

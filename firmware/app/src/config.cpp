@@ -148,6 +148,8 @@ void read_goals(Section& mission, MissionSettings& m) {
 }
 
 void read_mission(Section& mission, MissionSettings& m) {
+  m.drive = mission.text("drive", "waypoints", {"waypoints", "navigate"}) == "navigate" ? DriveMode::kNavigate
+                                                                                     : DriveMode::kWaypoints;
   read_goals(mission, m);
   m.goal_tolerance = mission.number("goal_tolerance_m", m.goal_tolerance, 0.01, 10.0);
   m.timeout_s = mission.number("timeout_s", m.timeout_s, 0.01, kMaxRunSeconds);
@@ -166,6 +168,56 @@ void read_follower(Section& follower, behaviour::MoveToWaypointParams& f) {
     follower.fail_missing("min_speed", "the default min_speed exceeds max_speed; set min_speed");
   }
   follower.reject_unknown();
+}
+
+void read_planner(Section& planner, PlannerSettings& p) {
+  planning::MapConfig& m = p.map;
+  m.origin_x = planner.number("origin_x", m.origin_x, -1e5, 1e5);
+  m.origin_y = planner.number("origin_y", m.origin_y, -1e5, 1e5);
+  m.resolution = planner.number("resolution_m", m.resolution, 0.01, 10.0);
+  m.width_cells = planner.integer("width_cells", m.width_cells, 1, 4096);
+  m.height_cells = planner.integer("height_cells", m.height_cells, 1, 4096);
+  m.region_cells = planner.integer("region_cells", m.region_cells, 1, 256);
+  for (const char* key : {"width_cells", "height_cells"}) {
+    const int n = std::string_view(key) == "width_cells" ? m.width_cells : m.height_cells;
+    if (n % m.region_cells == 0) continue;
+    const std::string why = "must be a multiple of region_cells (" + std::to_string(m.region_cells) + "): regions tile the grid";
+    if (const toml::node* node = planner.find(key)) planner.fail(*node, key, why);
+    planner.fail_missing(key, why);
+  }
+  p.cost.max_occupied = planner.integer("max_occupied", p.cost.max_occupied, 0, 65536);
+  p.cost.top_speed = planner.number("top_speed", p.cost.top_speed, 0.01, 100.0);
+  p.pops_per_slice = planner.integer("pops_per_slice", p.pops_per_slice, 1, 1000000);
+  planner.reject_unknown();
+}
+
+void read_reactive(Section& r, behaviour::reactive::ReactiveParams& p) {
+  p.arcs.count = r.integer("arcs", p.arcs.count, 1, behaviour::reactive::kMaxArcs);
+  p.arcs.max_curvature = r.number("max_curvature", p.arcs.max_curvature, 0.01, 100.0);
+  p.top_speed = r.number("top_speed", p.top_speed, 0.01, 100.0);
+  p.robot_radius = r.number("robot_radius_m", p.robot_radius, 0.01, 10.0);
+  p.margin = r.number("margin_m", p.margin, 0.0, 10.0);
+  p.lookahead = r.number("lookahead_m", p.lookahead, 0.1, 100.0);
+  p.waypoint_gain = r.number("waypoint_gain", p.waypoint_gain, 0.01, 100.0);
+  p.vote_width = r.number("vote_width", p.vote_width, 0.01, 100.0);
+  p.stop_distance = r.number("stop_distance_m", p.stop_distance, 0.0, 100.0);
+  p.slow_distance = r.number("slow_distance_m", p.slow_distance, 0.01, 100.0);
+  p.congestion_margin = r.number("congestion_margin_m", p.congestion_margin, 0.0, 100.0);
+  p.congested_speed = r.number("congested_speed", p.congested_speed, 0.01, 100.0);
+  p.max_yaw_rate = r.number("max_yaw_rate", p.max_yaw_rate, 0.01, 100.0);
+  for (int b = 0; b < behaviour::reactive::kBehaviours; ++b) {
+    const std::string key = std::string("weight_") + behaviour::reactive::kBehaviourNames[static_cast<std::size_t>(b)];
+    p.weight[static_cast<std::size_t>(b)] = r.number(key, p.weight[static_cast<std::size_t>(b)], 0.0, 1000.0);
+  }
+  if (p.slow_distance <= p.stop_distance) {
+    if (const toml::node* n = r.find("slow_distance_m")) r.fail(*n, "slow_distance_m", "must be larger than stop_distance_m");
+    r.fail_missing("slow_distance_m", "must be larger than stop_distance_m");
+  }
+  if (p.congested_speed > p.top_speed) {
+    if (const toml::node* n = r.find("congested_speed")) r.fail(*n, "congested_speed", "must not exceed top_speed");
+    r.fail_missing("congested_speed", "the default congested_speed exceeds top_speed; set congested_speed");
+  }
+  r.reject_unknown();
 }
 
 void read_safety(Section& safety, SafetyParams& p) {
@@ -248,6 +300,10 @@ FirmwareConfig parse_config(std::string_view text, const std::string& source, co
   read_follower(follower, cfg.follower);
   Section safety = in("safety");
   read_safety(safety, cfg.safety);
+  Section planner = in("planner");
+  read_planner(planner, cfg.planner);
+  Section reactive = in("reactive");
+  read_reactive(reactive, cfg.reactive);
   Section camera = in("camera");
   read_camera(camera, cfg.camera);
   Section vision = in("vision");

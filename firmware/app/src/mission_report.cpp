@@ -236,8 +236,9 @@ bool write_picture(std::ostream& out, const FirmwareStack& stack, const MissionS
   std::snprintf(caption, sizeof caption, "%s: %zu/%zu goals in %.1f s, %.1f m, %llu collisions (seed %s)",
                 s.world.c_str(), s.goals_reached, s.goal_count, s.mission_seconds, s.distance_m,
                 static_cast<unsigned long long>(s.collisions), seed_text(s).c_str());
-  truth->write_picture(out, hal::RunPicture{stack.telemetry().trajectory(), stack.telemetry().collision_points(),
-                                            goals, s.goals_reached, caption});
+  hal::RunPicture run{stack.telemetry().trajectory(), stack.telemetry().collision_points(), goals, s.goals_reached, caption};
+  run.plans = stack.telemetry().plan_picture();
+  truth->write_picture(out, run);
   return true;
 }
 

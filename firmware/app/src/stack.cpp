@@ -81,14 +81,21 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& r
       telemetry_(static_cast<std::size_t>(trajectory_samples(config_, config_.mission.timeout_s)), 1024),
       ball_tracker_(board_),
       mission_machine_(board_, config_.follower),
+      navigate_machine_(board_),
       safety_(board_, config_.safety.stop_range, config_.safety.release_range, config_.safety.hold_ms),
       fsm_bus_(board_),
       schedule_(stopwatch_, &fsm_bus_),
       owned_camera_(make_camera(config_, clock())) {
   // Schedule order is the order of the machines' writes within a turn: Safety runs last, twice,
   // so that the turn that sees an obstacle also posts the stop that stands (safety.machine).
+  // The mission is driven by one machine: straight at the goals (Mission), or through the planner
+  // and the arbiter (Navigate); no task writes MotionCommand, so Safety's word is the last.
   schedule_.add(ball_tracker_);
-  schedule_.add(mission_machine_);
+  if (config_.mission.drive == DriveMode::kNavigate) {
+    schedule_.add(navigate_machine_);
+  } else {
+    schedule_.add(mission_machine_);
+  }
   schedule_.add(safety_, 2);
 
   const std::vector<const RegisteredTask*> table = tasks_of_table(config_, registry);

@@ -1,9 +1,12 @@
 #include "ringlet/firmware/task_registry.hpp"
 
 #include "ringlet/firmware/tasks/actuate_task.hpp"
+#include "ringlet/firmware/tasks/arbiter_task.hpp"
 #include "ringlet/firmware/tasks/ball_sensor_task.hpp"
 #include "ringlet/firmware/tasks/fsm_task.hpp"
 #include "ringlet/firmware/tasks/goals_task.hpp"
+#include "ringlet/firmware/tasks/plan_record_task.hpp"
+#include "ringlet/firmware/tasks/planner_task.hpp"
 #include "ringlet/firmware/tasks/sense_task.hpp"
 #include "ringlet/firmware/tasks/telemetry_task.hpp"
 #include "ringlet/firmware/tasks/vision_task.hpp"
@@ -24,9 +27,12 @@ TaskRegistry production_tasks() {
   registry.add<BallSensorTask>();
   registry.add<GoalsTask>();
   registry.add<VisionTask>();
+  registry.add<PlannerTask>();
+  registry.add<ArbiterTask>();
   registry.add<FsmTask>();
   registry.add<ActuateTask>();
   registry.add<TelemetryTask>();
+  registry.add<PlanRecordTask>();
   registry.add<WhiteboardTask>();
   return registry;
 }

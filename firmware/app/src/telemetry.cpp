@@ -44,4 +44,43 @@ VisionStats& Telemetry::enable_vision() noexcept {
   return vision_;
 }
 
+PlanTrack& Telemetry::enable_plans(const hal::PlanPicture& geometry, std::size_t cells, std::size_t plans,
+                                   std::size_t points_per_plan) {
+  plans_enabled_ = true;
+  plans_.geometry = geometry;
+  plans_.cells.reserve(cells);
+  plans_.ends.reserve(plans);
+  plans_.points.reserve(plans * points_per_plan);
+  return plans_;
+}
+
+void Telemetry::record_map_cell(std::uint32_t cell) noexcept {
+  if (plans_.cells.size() < plans_.cells.capacity()) {
+    plans_.cells.push_back(cell);
+  } else {
+    ++plans_.dropped;
+  }
+}
+
+void Telemetry::record_plan(std::span<const hal::WorldPoint> path) noexcept {
+  if (plans_.ends.size() == plans_.ends.capacity() || plans_.points.size() + path.size() > plans_.points.capacity()) {
+    ++plans_.dropped;
+    return;
+  }
+  plans_.points.insert(plans_.points.end(), path.begin(), path.end());
+  plans_.ends.push_back(static_cast<std::uint32_t>(plans_.points.size()));
+  ++plans_.plans;
+}
+
+void Telemetry::record_missed_plans(std::uint64_t n) noexcept { plans_.missed_posts += n; }
+
+hal::PlanPicture Telemetry::plan_picture() const noexcept {
+  if (!plans_enabled_) return {};
+  hal::PlanPicture p = plans_.geometry;
+  p.occupied = plans_.cells;
+  p.plan_points = plans_.points;
+  p.plan_ends = plans_.ends;
+  return p;
+}
+
 }  // namespace ringlet::firmware

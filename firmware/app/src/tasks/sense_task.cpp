@@ -1,5 +1,7 @@
 #include "ringlet/firmware/tasks/sense_task.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace ringlet::firmware {
@@ -23,6 +25,19 @@ wb::LaserSummary summarize(const hal::LaserScan& scan) noexcept {
   return s;
 }
 
+// The scan in whiteboard form: millimetres, 0 for no return (ranges beyond 65.534 m saturate).
+void to_message(const hal::LaserScan& scan, std::int64_t stamp_ns, wb::LaserScan& m) noexcept {
+  m.stamp_ns = stamp_ns;
+  m.beam_count = static_cast<std::uint16_t>(std::min<std::size_t>(scan.beam_count, m.range_mm.size()));
+  m.angle_min = scan.angle_min;
+  m.angle_increment = scan.angle_increment;
+  m.max_range = scan.max_range;
+  for (std::size_t i = 0; i < m.range_mm.size(); ++i) {
+    const double r = i < m.beam_count && scan.valid[i] ? static_cast<double>(scan.range[i]) : 0.0;
+    m.range_mm[i] = r > 0.0 && std::isfinite(r) ? static_cast<std::uint16_t>(std::clamp(std::lround(r * 1000.0), 1L, 65534L)) : 0;
+  }
+}
+
 }  // namespace
 
 std::unique_ptr<executive::Task> SenseTask::make(TaskServices& services) {
@@ -34,6 +49,8 @@ void SenseTask::run(const executive::TaskContext& ctx) noexcept {
   if (!ok && sensors_.exhausted()) ctx.request_stop();  // a replayed log has ended
   board_.post(wb::Pose{frame_.pose.pose.x, frame_.pose.pose.y, frame_.pose.pose.theta, ok && frame_.pose.valid});
   board_.post(summarize(frame_.laser));
+  to_message(frame_.laser, frame_.stamp.count(), scan_);
+  board_.post(scan_);
   board_.post(wb::HeadPosture{frame_.stamp.count(), frame_.head.yaw, frame_.head.pitch, frame_.body.tilt.pitch,
                               frame_.body.tilt.roll, frame_.body.valid});
   board_.post(wb::BodyState{frame_.stamp.count(), frame_.odometry.distance, frame_.odometry.velocity,

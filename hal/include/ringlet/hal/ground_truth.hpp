@@ -19,6 +19,16 @@ struct WorldPoint {
   double y = 0.0;
 };
 
+/// The planner's map and plans, as the run recorded them (all empty when it had no planner).
+struct PlanPicture {
+  WorldPoint origin{};   // the grid's lower-left corner (m)
+  double cell = 0.0;     // cell side (m); 0: no map
+  int width_cells = 0, height_cells = 0, region_cells = 0;
+  std::span<const std::uint32_t> occupied;   // occupied cells: row · width_cells + column
+  std::span<const WorldPoint> plan_points;   // every recorded plan's path, one after the other
+  std::span<const std::uint32_t> plan_ends;  // plan i is plan_points[plan_ends[i-1] .. plan_ends[i])
+};
+
 /// What the controller did, to be drawn over the world.
 struct RunPicture {
   std::span<const Pose2> trajectory;      // in driving order
@@ -26,6 +36,7 @@ struct RunPicture {
   std::span<const WorldPoint> goals;      // the mission's, in order
   std::size_t goals_reached = 0;          // the first N goals are drawn as reached
   std::string_view caption;               // one line under the picture
+  PlanPicture plans{};                    // the planner's map and plans, if any
 };
 
 class GroundTruth {

@@ -42,6 +42,8 @@ class OccupancyGrid {
   /// Marks the cell holding world point (wx, wy) occupied; false when it was already occupied
   /// or lies outside the map.
   bool mark(double wx, double wy) noexcept;
+  /// Marks cell (cx, cy), which must lie inside the map; false when it was already occupied.
+  bool mark_cell(int cx, int cy) noexcept;
   /// Marks the end point of every valid beam of `scan`, taken at `pose` (eq. 20: an invalid beam
   /// saw nothing and marks nothing). Returns the number of newly occupied cells.
   int integrate(const hal::LaserScan& scan, const hal::Pose2& pose) noexcept;

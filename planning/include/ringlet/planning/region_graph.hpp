@@ -6,6 +6,11 @@
 // A diagonal edge runs through the corner the two regions share, so it is allowed only where the
 // reactive layer could also pass by the side: both straight transitions from its start towards
 // the sides must be traversable (the same no-corner-cutting rule as the MovingAI benchmarks).
+//
+// The robot's own region never keeps it in: its occupied cells are not counted for transitions
+// out of it (the robot is there already, and driving along a wall fills the region it is in).
+// The planner says where the robot is with set_robot_region() and then tells D* Lite that the old
+// and the new region changed.
 #include "ringlet/planning/cost_model.hpp"
 #include "ringlet/planning/grid_graph.hpp"
 #include "ringlet/planning/occupancy_grid.hpp"
@@ -25,6 +30,9 @@ class RegionGraph final : public GridGraph {
   /// A straight step at top speed, rounded down.
   [[nodiscard]] Cost min_step_cost() const noexcept override;
   [[nodiscard]] static double seconds(Cost c) noexcept { return static_cast<double>(c) / kCostPerSecond; }
+  /// The region the robot is in (−1: none).
+  void set_robot_region(int region) noexcept { robot_region_ = region; }
+  [[nodiscard]] int robot_region() const noexcept { return robot_region_; }
 
  private:
   /// The clamped expected speed from region v one step in direction k (0: impassable).
@@ -32,6 +40,7 @@ class RegionGraph final : public GridGraph {
 
   const OccupancyGrid& map_;
   const CostModel& model_;
+  int robot_region_ = -1;
 };
 
 }  // namespace ringlet::planning

@@ -42,7 +42,8 @@ struct ObstaclePoints {
 [[nodiscard]] ObstaclePoints obstacles_from_scan(const hal::LaserScan& scan) noexcept;
 
 /// The distance along the arc of curvature `kappa` from the robot to where it first comes within
-/// `radius` of `p`: 0 if it is already that close, `limit` if not within `limit`.
+/// `radius` of `p`, `limit` if not within `limit`. If the robot is already that close: 0 when the
+/// arc brings it closer still, `limit` when it leads away (the way out).
 [[nodiscard]] double distance_to_contact(double kappa, const hal::RobotPoint& p, double radius, double limit) noexcept;
 
 /// For every arc, the distance to the first contact with the configuration space of radius

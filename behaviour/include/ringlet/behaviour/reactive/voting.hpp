@@ -2,7 +2,8 @@
 // The five behaviours and the arbiter of Powers & Balch §III-A. Each behaviour casts votes for
 // (positive) or against (negative) every arc and sets a maximum allowable speed on each; the
 // arbiter sums the votes with per-behaviour weights, picks the arc with the most, and drives it at
-// the smallest of the behaviours' maximum speeds for that arc.
+// the smallest of the behaviours' maximum speeds for that arc. One addition to the paper: a speed
+// limit of 0 vetoes an arc while another can be driven (see arbitrate()).
 //
 //   Move to Waypoint       + votes around the arc of a linear law from the heading error
 //   Avoid Obstacles        − votes by how soon the arc enters the obstacles' configuration space
@@ -56,9 +57,13 @@ struct ReactiveParams {
   [[nodiscard]] std::string validate() const;
 };
 
-/// Move to Waypoint: `heading_error` as behaviour::heading_error (positive: the waypoint lies
-/// clockwise, so a positive curvature turns towards it).
-void move_to_waypoint_votes(const ReactiveParams& p, double heading_error, ArcVotes& out) noexcept;
+/// The heading error to a waypoint in the robot frame, as behaviour::heading_error: positive when
+/// it lies clockwise (to the right), so that a positive curvature turns towards it.
+[[nodiscard]] double heading_error_to(const hal::RobotPoint& waypoint) noexcept;
+/// Move to Waypoint: κ* = waypoint_gain · heading error, clamped to the arcs. A waypoint inside
+/// the tightest turning circle on its side cannot be reached by turning towards it (the robot
+/// would circle it for ever): then κ* = 0, straight on, until it lies outside.
+void move_to_waypoint_votes(const ReactiveParams& p, const hal::RobotPoint& waypoint, ArcVotes& out) noexcept;
 /// Avoid Obstacles, from the clearance of every arc in the configuration space (clearances()
 /// with robot_radius + margin, capped at lookahead): −(1 − d / lookahead).
 void avoid_obstacles_votes(const ReactiveParams& p, const PerArc& clearance, ArcVotes& out) noexcept;
@@ -77,7 +82,8 @@ struct ArbiterDecision {
 };
 
 /// The weighted sum, the arc with the most votes (ties: the straighter arc, then the lower
-/// index, so the choice is the same on every host), and the slowest speed limit on it.
+/// index, so the choice is the same on every host), and the slowest speed limit on it. An arc
+/// whose speed limit is 0 is chosen only when every arc's is (then the robot stops).
 [[nodiscard]] ArbiterDecision arbitrate(const ReactiveParams& p, const std::array<ArcVotes, kBehaviours>& votes) noexcept;
 
 /// Everything the reactive layer computes in one activation: each behaviour's votes (for
@@ -88,7 +94,9 @@ struct ReactiveStep {
   ArbiterDecision decision;
 };
 
-/// One activation: clearances from the obstacles, the five behaviours, the arbiter.
-void reactive_step(const ReactiveParams& p, double heading_error, const ObstaclePoints& obstacles, ReactiveStep& out) noexcept;
+/// One activation: clearances from the obstacles, the five behaviours, the arbiter; `waypoint` in
+/// the robot frame.
+void reactive_step(const ReactiveParams& p, const hal::RobotPoint& waypoint, const ObstaclePoints& obstacles,
+                   ReactiveStep& out) noexcept;
 
 }  // namespace ringlet::behaviour::reactive

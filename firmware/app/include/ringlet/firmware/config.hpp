@@ -14,10 +14,13 @@
 #include <vector>
 
 #include "ringlet/behaviour/move_to_waypoint.hpp"
+#include "ringlet/behaviour/reactive/voting.hpp"
 #include "ringlet/executive/realtime.hpp"
 #include "ringlet/executive/task_table.hpp"
 #include "ringlet/hal/camera.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/planning/cost_model.hpp"
+#include "ringlet/planning/occupancy_grid.hpp"
 
 namespace ringlet::firmware {
 
@@ -51,12 +54,26 @@ struct CameraSettings {
   hal::PixelFormat format = hal::PixelFormat::kYuyv;
 };
 
+/// How the mission drives ([mission] drive): "waypoints" — the Mission machine steers straight at
+/// each goal (move_to_waypoint, [follower]); "navigate" — the Navigate machine follows the
+/// planner's regions (D* Lite, [planner]) with the arbiter's arcs (the reactive layer, [reactive]).
+enum class DriveMode { kWaypoints, kNavigate };
+
 /// The mission ([mission]): waypoints in the world frame, visited in order.
 struct MissionSettings {
   static constexpr std::size_t kMaxGoals = 32;  // what wb::MissionGoals holds
+  DriveMode drive = DriveMode::kWaypoints;
   std::vector<behaviour::Waypoint> goals;
   double goal_tolerance = 0.3;  // m: a goal counts as reached this close
   double timeout_s = 300.0;     // schedule time before giving up
+};
+
+/// The deliberative layer ([planner], Powers & Balch §III-B): the occupancy grid and its regions,
+/// the binary cost model, and the work one activation of the planner task may do.
+struct PlannerSettings {
+  planning::MapConfig map{};
+  planning::BinaryCostModel::Params cost{};
+  int pops_per_slice = 2000;  // D* Lite queue pops per activation (the deterministic slice)
 };
 
 /// One backend's own section ([sim], ...), read and used by the backend factory only.
@@ -116,6 +133,8 @@ struct FirmwareConfig {
   executive::RealtimeSettings realtime{};
   std::vector<executive::TaskSpec> tasks;
   SafetyParams safety{};
+  PlannerSettings planner{};
+  behaviour::reactive::ReactiveParams reactive{};
   CameraSettings camera{};
   VisionSettings vision{};
   int trajectory_every = 10;        // telemetry.trajectory_every: frames between samples

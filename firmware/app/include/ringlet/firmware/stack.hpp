@@ -13,6 +13,7 @@
 #include "ringlet/behaviour/llfsm/schedule.hpp"
 #include "ringlet/behaviour/llfsm/whiteboard_bus.hpp"
 #include "ringlet/behaviour/machines/ball_tracker.hpp"
+#include "ringlet/behaviour/machines/navigate.hpp"
 #include "ringlet/behaviour/machines/mission.hpp"
 #include "ringlet/behaviour/machines/safety.hpp"
 #include "ringlet/executive/event_log.hpp"
@@ -80,6 +81,7 @@ class FirmwareStack {
   Telemetry telemetry_;
   behaviour::machines::BallTracker ball_tracker_;
   behaviour::machines::Mission mission_machine_;
+  behaviour::machines::Navigate navigate_machine_;  // scheduled instead of Mission with [mission] drive = "navigate"
   behaviour::machines::Safety safety_;
   behaviour::llfsm::WhiteboardFsmBus fsm_bus_;
   behaviour::llfsm::Schedule schedule_;

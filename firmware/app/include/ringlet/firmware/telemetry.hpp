@@ -28,6 +28,19 @@ struct VisionStats {
   std::uint64_t missed_frames = 0;  // sequence gaps: frames the camera had that were never processed
 };
 
+/// The planner's map and plans over the run (PlanRecordTask fills it): every cell the planner
+/// marked occupied, and the plans worth drawing — the first plan to each goal and every plan after
+/// a replan.
+struct PlanTrack {
+  hal::PlanPicture geometry{};  // origin, cell size and counts; the spans are set when drawn
+  std::vector<std::uint32_t> cells;
+  std::vector<hal::WorldPoint> points;
+  std::vector<std::uint32_t> ends;
+  std::uint64_t plans = 0;          // plans recorded
+  std::uint64_t dropped = 0;        // cells or plans that did not fit (counted, not stored)
+  std::uint64_t missed_posts = 0;   // Plan generations overwritten before they were read
+};
+
 class Telemetry {
  public:
   Telemetry(std::size_t trajectory_capacity, std::size_t collision_capacity);
@@ -39,6 +52,15 @@ class Telemetry {
   void record_progress(std::size_t goals_reached, std::size_t goal_count) noexcept;
   /// Start-up only: the vision task's counters (the report shows them when enabled).
   VisionStats& enable_vision() noexcept;
+  /// Start-up only (allocates): room for `cells` occupied cells and `plans` plans of up to
+  /// `points_per_plan` points.
+  PlanTrack& enable_plans(const hal::PlanPicture& geometry, std::size_t cells, std::size_t plans, std::size_t points_per_plan);
+  void record_map_cell(std::uint32_t cell) noexcept;
+  void record_plan(std::span<const hal::WorldPoint> path) noexcept;
+  void record_missed_plans(std::uint64_t n) noexcept;
+  [[nodiscard]] const PlanTrack* plans() const noexcept { return plans_enabled_ ? &plans_ : nullptr; }
+  /// The map and the plans for the picture (an empty PlanPicture without a planner).
+  [[nodiscard]] hal::PlanPicture plan_picture() const noexcept;
 
   [[nodiscard]] std::span<const hal::Pose2> trajectory() const noexcept { return trajectory_; }
   [[nodiscard]] std::span<const hal::WorldPoint> collision_points() const noexcept { return collision_points_; }
@@ -62,6 +84,8 @@ class Telemetry {
   std::size_t goal_count_ = 0;
   bool vision_enabled_ = false;
   VisionStats vision_{};
+  bool plans_enabled_ = false;
+  PlanTrack plans_{};
 };
 
 }  // namespace ringlet::firmware

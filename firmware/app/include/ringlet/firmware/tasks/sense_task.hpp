@@ -1,6 +1,6 @@
 #pragma once
-// HAL sensors → whiteboard: the pose measurement, the nearest laser return, the head's posture and
-// the base's state (odometry, bumper, battery), each stamped. On the simulated robot this read is
+// HAL sensors → whiteboard: the pose measurement, the laser scan and its nearest return, the head's
+// posture and the base's state (odometry, bumper, battery), each stamped. On the simulated robot this read is
 // also what advances the world by one period.
 #include <memory>
 
@@ -15,7 +15,7 @@ namespace ringlet::firmware {
 class SenseTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{
-      "sense", kNoTypes, kTypeNames<wb::Pose, wb::LaserSummary, wb::HeadPosture, wb::BodyState>,
+      "sense", kNoTypes, kTypeNames<wb::Pose, wb::LaserSummary, wb::LaserScan, wb::HeadPosture, wb::BodyState>,
       here()};
   /// HAL read and posting. The simulator's own work inside read() (ray casting the laser, waiting
   /// for the render thread) is not the robot's and is not modelled.
@@ -30,6 +30,7 @@ class SenseTask final : public executive::Task {
   hal::Sensors& sensors_;
   wb::Whiteboard& board_;
   hal::SensorFrame frame_{};  // filled in place by the backend: no copy of the laser per frame
+  wb::LaserScan scan_{};      // the scan as posted (millimetres), kept here: 1.5 kB off the stack
 };
 
 }  // namespace ringlet::firmware
