@@ -3,6 +3,7 @@
 #include "ringlet/sim_hal/collision.hpp"
 
 #include <cmath>
+#include <ranges>
 
 #include "vec2_math.hpp"
 
@@ -66,20 +67,55 @@ bool inside_polygon(Vec2 p, const Polygon& polygon) noexcept {
   return inside;
 }
 
-}  // namespace
-
-double cast_ray(const World& world, Vec2 origin, double bearing, double max_range) noexcept {
+/// The first hit among the given circles and polygons (and the walls), or +inf beyond max_range.
+template <class CircleIndices, class PolygonIndices>
+double cast_among(const World& world, Vec2 origin, double bearing, double max_range, const CircleIndices& circles,
+                  const PolygonIndices& polygons) noexcept {
   // Bearing convention of geometry.hpp: 0 looks along +y, pi/2 along +x.
   const Vec2 dir{std::sin(bearing), std::cos(bearing)};
   double best = ray_walls(world, origin, dir);
-  for (const Circle& circle : world.circles) best = std::fmin(best, ray_circle(origin, dir, circle));
-  for (const Polygon& polygon : world.polygons) {
-    const auto& v = polygon.vertices;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      best = std::fmin(best, ray_segment(origin, dir, v[i], v[(i + 1) % v.size()]));
-    }
+  for (const auto c : circles) best = std::fmin(best, ray_circle(origin, dir, world.circles[c]));
+  for (const auto p : polygons) {
+    const auto& v = world.polygons[p].vertices;
+    for (std::size_t i = 0; i < v.size(); ++i) best = std::fmin(best, ray_segment(origin, dir, v[i], v[(i + 1) % v.size()]));
   }
   return best <= max_range ? best : kNoHit;
+}
+
+}  // namespace
+
+double cast_ray(const World& world, Vec2 origin, double bearing, double max_range) noexcept {
+  return cast_among(world, origin, bearing, max_range, std::views::iota(std::size_t{0}, world.circles.size()),
+                    std::views::iota(std::size_t{0}, world.polygons.size()));
+}
+
+void RayCandidates::reserve(const World& world) {
+  circles_.reserve(world.circles.size());
+  polygons_.reserve(world.polygons.size());
+}
+
+void RayCandidates::select(const World& world, Vec2 origin, double max_range) noexcept {
+  circles_.clear();
+  polygons_.clear();
+  for (std::size_t i = 0; i < world.circles.size() && circles_.size() < circles_.capacity(); ++i) {
+    const Circle& c = world.circles[i];
+    const double reach = max_range + c.radius;
+    if (length_squared(origin - c.centre) <= reach * reach) circles_.push_back(static_cast<std::uint32_t>(i));
+  }
+  const double range_squared = max_range * max_range;
+  for (std::size_t i = 0; i < world.polygons.size() && polygons_.size() < polygons_.capacity(); ++i) {
+    const auto& v = world.polygons[i].vertices;
+    bool near = false;
+    for (std::size_t k = 0; k < v.size() && !near; ++k) {
+      near = segment_distance_squared(origin, v[k], v[(k + 1) % v.size()]) <= range_squared;
+    }
+    if (near) polygons_.push_back(static_cast<std::uint32_t>(i));
+  }
+}
+
+double RayCandidates::cast(const World& world, Vec2 origin, double bearing, double max_range) const noexcept {
+  // As cast_ray, over the candidates only: a hit beyond max_range is no hit either way.
+  return cast_among(world, origin, bearing, max_range, circles_, polygons_);
 }
 
 bool disc_collides(const World& world, Vec2 centre, double radius) noexcept {

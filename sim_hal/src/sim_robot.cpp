@@ -46,6 +46,7 @@ double sway_phase(std::uint64_t seed) noexcept {
 SimRobot::SimRobot(World world, const SimConfig& config)
     : world_(std::move(world)), config_(config), rng_(config.seed), sway_phase_(sway_phase(config.seed)) {
   validate(config_);
+  rays_.reserve(world_);
   body_ = {config_.body.pitch, config_.body.roll};
   state_.pose = world_.start;
   if (disc_collides(world_, Vec2{state_.pose.x, state_.pose.y}, config_.robot_radius)) {
@@ -175,8 +176,9 @@ void SimRobot::measure(hal::SensorFrame& out) noexcept {
   scan.angle_increment = beams == 1 ? 0.0 : config_.laser_fov / static_cast<double>(beams - 1);
   scan.max_range = config_.laser_range;
   const Vec2 origin{pose.x, pose.y};
+  rays_.select(world_, origin, config_.laser_range);
   for (std::size_t i = 0; i < beams; ++i) {
-    const double hit = cast_ray(world_, origin, pose.theta + scan.beam_angle(i), config_.laser_range);
+    const double hit = rays_.cast(world_, origin, pose.theta + scan.beam_angle(i), config_.laser_range);
     if (std::isfinite(hit)) {
       const double noisy = std::clamp(hit + noise(config_.laser_sigma), 0.0, config_.laser_range);
       scan.range[i] = static_cast<float>(noisy);

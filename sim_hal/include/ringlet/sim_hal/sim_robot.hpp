@@ -13,6 +13,7 @@
 #include "ringlet/hal/robot.hpp"
 #include "ringlet/sim_hal/kinematics.hpp"
 #include "ringlet/sim_hal/sim_camera.hpp"
+#include "ringlet/sim_hal/collision.hpp"
 #include "ringlet/sim_hal/world.hpp"
 
 namespace ringlet::sim_hal {
@@ -101,6 +102,7 @@ class SimRobot : public hal::Robot, private hal::Sensors, private hal::Actuators
   void measure(hal::SensorFrame& out) noexcept;
 
   World world_;
+  RayCandidates rays_;  // the obstacles within the laser's range, chosen once per scan
   SimConfig config_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> unit_normal_{0.0, 1.0};
