@@ -40,6 +40,25 @@ TEST(NoAllocation, FullSimulatedStackAllocatesNothingInTheCycle) {
   EXPECT_GT(stack.telemetry().goals_reached(), 0U) << "the robot must actually drive during the counted frames";
 }
 
+// The hybrid controller: the planner (grid, regions, D* Lite, its repairs), the arbiter and the
+// plan record, in P&B's test world where the dead end makes the planner replan.
+TEST(NoAllocation, PlannerArbiterAndNavigateAllocateNothing) {
+  const auto cfg = test::parse_as_shipped(test::shipped_config_text(test::kShippedConfig.parent_path() / "pb_test.toml"));
+  FirmwareStack stack(cfg);
+  auto& exec = stack.executive();
+  exec.run(1);
+  std::uint64_t allocations = 0;
+  {
+    AllocationCounter counter;
+    exec.run(3000);  // 30 s: the first plan, into the dead end's mouth, the repairs around it
+    allocations = counter.count();
+  }
+  EXPECT_EQ(allocations, 0U) << "operator new was called inside the cycle";
+  ASSERT_NE(stack.telemetry().plans(), nullptr);
+  EXPECT_GT(stack.telemetry().plans()->plans, 1U) << "the planner must have replanned in the counted frames";
+  EXPECT_GT(stack.telemetry().plans()->cells.size(), 100U);
+}
+
 TEST(NoAllocation, CameraAndVisionAllocateNothingEither) {
   // The main job's stack: the sim camera's render thread and the vision task run as well; the
   // counter sees every thread's allocations.

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -160,6 +161,31 @@ TEST(Navigation, APlanIsPostedOnlyWhenItsSearchHasFinished) {
     break;
   }
   EXPECT_GT(searching, 10) << "the search must have been sliced";
+}
+
+TEST(Navigation, RobotsVisionSeesEnterTheMapAsLaserHitsDo) {
+  auto cfg = parse_as_shipped(shipped_config_text(kNavConfig));
+  wb::Whiteboard board;
+  PlannerTask planner(cfg.planner, board, false);
+  board.post(wb::Pose{5.0, 5.0, std::numbers::pi / 2, true});  // facing +x
+  executive::TaskContext ctx;
+  planner.run(ctx);
+  EXPECT_EQ(planner.map().occupied_cells(), 0);
+  wb::RobotDetections robots{};
+  robots.count = 1;
+  robots.foot_x[0] = 2.0;  // 2 m ahead, 1 m to the left: world (7, 6)
+  robots.foot_y[0] = 1.0;
+  board.post(robots);
+  planner.run(ctx);
+  int cx = 0, cy = 0;
+  ASSERT_TRUE(planner.map().cell_of(7.0, 6.0, cx, cy));
+  EXPECT_TRUE(planner.map().occupied(cx, cy));
+  EXPECT_EQ(planner.map().occupied_cells(), 1);
+  const wb::Plan plan = board.get<wb::Plan>();
+  ASSERT_EQ(plan.new_cell_count, 1);
+  EXPECT_EQ(plan.new_cells[0], static_cast<std::uint32_t>(cy * cfg.planner.map.width_cells + cx));
+  planner.run(ctx);  // the same detections are not marked twice (nor counted as new)
+  EXPECT_EQ(board.get<wb::Plan>().new_cell_count, 0);
 }
 
 TEST(Navigation, CourtyardMissionCompletesEverySliceInsideItsBudget) {

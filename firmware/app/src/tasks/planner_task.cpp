@@ -21,6 +21,16 @@ PlannerTask::PlannerTask(const PlannerSettings& settings, wb::Whiteboard& board,
   path_.assign(static_cast<std::size_t>(graph_.vertex_count()), -1);
 }
 
+void PlannerTask::mark(double wx, double wy) noexcept {
+  int cx = 0, cy = 0;
+  if (!map_.cell_of(wx, wy, cx, cy) || !map_.mark_cell(cx, cy)) return;
+  if (plan_.new_cell_count < plan_.new_cells.size()) {
+    plan_.new_cells[plan_.new_cell_count++] = static_cast<std::uint32_t>(cy * settings_.map.width_cells + cx);
+  } else {
+    ++plan_.new_cells_dropped;
+  }
+}
+
 int PlannerTask::integrate_scan(const wb::Pose& pose) noexcept {
   // The scan as hal::LaserScan would give it, without copying one: beam i at angle_min + i·inc.
   const std::size_t beams = std::min<std::size_t>(scan_.beam_count, scan_.range_mm.size());
@@ -28,16 +38,20 @@ int PlannerTask::integrate_scan(const wb::Pose& pose) noexcept {
     if (scan_.range_mm[i] == 0) continue;  // phi: nothing seen, nothing marked
     const double bearing = pose.theta + scan_.angle_min + static_cast<double>(i) * scan_.angle_increment;
     const double r = scan_.range_mm[i] * 1e-3;
-    int cx = 0, cy = 0;
-    if (!map_.cell_of(pose.x + r * std::sin(bearing), pose.y + r * std::cos(bearing), cx, cy) || !map_.mark_cell(cx, cy))
-      continue;
-    if (plan_.new_cell_count < plan_.new_cells.size()) {
-      plan_.new_cells[plan_.new_cell_count++] = static_cast<std::uint32_t>(cy * settings_.map.width_cells + cx);
-    } else {
-      ++plan_.new_cells_dropped;
-    }
+    mark(pose.x + r * std::sin(bearing), pose.y + r * std::cos(bearing));
   }
   return static_cast<int>(beams);
+}
+
+void PlannerTask::integrate_robots(const wb::Pose& pose) noexcept {
+  const std::uint64_t gen = board_.generation<wb::RobotDetections>();
+  if (gen == robots_seen_) return;  // none posted since (or no vision in the table)
+  robots_seen_ = gen;
+  const wb::RobotDetections d = board_.get<wb::RobotDetections>();
+  // Feet in the robot frame (x ahead, y left) to the world: ahead is (sin θ, cos θ), left (−cos θ, sin θ).
+  const double s = std::sin(pose.theta), c = std::cos(pose.theta);
+  for (std::size_t i = 0; i < std::min<std::size_t>(d.count, d.foot_x.size()); ++i)
+    mark(pose.x + d.foot_x[i] * s - d.foot_y[i] * c, pose.y + d.foot_x[i] * c + d.foot_y[i] * s);
 }
 
 void PlannerTask::run(const executive::TaskContext& ctx) noexcept {
@@ -46,7 +60,10 @@ void PlannerTask::run(const executive::TaskContext& ctx) noexcept {
   scan_ = board_.get<wb::LaserScan>();
   int beams = 0;
   plan_.new_cell_count = 0;  // this activation's new cells only (the dropped count runs on)
-  if (pose.valid) beams = integrate_scan(pose);
+  if (pose.valid) {
+    beams = integrate_scan(pose);
+    integrate_robots(pose);
+  }
   const std::int64_t pops_before = search_.counters().pops;
   const int start = pose.valid ? map_.region_at(pose.x, pose.y) : -1;
   const int goal = map_.region_at(mission.target_x, mission.target_y);

@@ -35,6 +35,9 @@ struct TaskDeclaration {
   std::span<const std::string_view> requires_types;
   std::span<const std::string_view> provides_types;
   SourcePlace where;
+  /// Types the task reads when some task or machine provides them, and does without otherwise
+  /// (e.g. the planner marks the robots vision sees, on a robot that runs vision).
+  std::span<const std::string_view> optional_types{};
 
   /// "file:line" of the declaration, for start-up messages. The compiler may have been handed the
   /// file relative to the build folder (ccache's base_dir does that): leading "../" go.

@@ -3,7 +3,8 @@
 // occupancy grid through the pose, and D* Lite plans over the map's regions to the mission's
 // current target (MissionStatus, posted by the Navigate machine), in slices.
 //
-// Each activation marks the newest scan, tells D* Lite where the robot now is and which regions
+// Each activation marks the newest scan (and the feet of the robots vision saw since the last
+// activation, when the table runs vision: obstacles as laser hits are), tells D* Lite where the robot now is and which regions
 // changed, and resumes the search for at most [planner] pops_per_slice queue pops: a
 // deterministic amount of work, so a lockstep run is a pure function of seed and configuration.
 // On the real clock the activation's deadline is a backstop, checked every 64 pops. A plan becomes
@@ -29,7 +30,7 @@ namespace ringlet::firmware {
 class PlannerTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{"planner", kTypeNames<wb::Pose, wb::LaserScan, wb::MissionStatus>,
-                                                kTypeNames<wb::Plan>, here()};
+                                                kTypeNames<wb::Plan>, here(), kTypeNames<wb::RobotDetections>};
   /// The board's cost: a fixed part, every beam placed in the grid, every queue pop.
   static constexpr hal::Nanos kBaseCost{20'000};
   static constexpr hal::Nanos kCostPerBeam{100};
@@ -44,6 +45,8 @@ class PlannerTask final : public executive::Task {
 
  private:
   int integrate_scan(const wb::Pose& pose) noexcept;
+  void integrate_robots(const wb::Pose& pose) noexcept;
+  void mark(double wx, double wy) noexcept;
   void post_plan(planning::SearchStatus status, const wb::MissionStatus& mission) noexcept;
 
   PlannerSettings settings_;
@@ -57,6 +60,7 @@ class PlannerTask final : public executive::Task {
   wb::LaserScan scan_{};
   wb::Plan plan_{};
   bool searching_goal_ = false;  // a search for plan_.goal_x/y has begun
+  std::uint64_t robots_seen_ = 0;  // the last RobotDetections generation marked
   hal::Nanos cost_{kBaseCost};
 };
 
