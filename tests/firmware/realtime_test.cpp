@@ -5,7 +5,10 @@
 // The binary runs serially (RUN_SERIAL). Wall-clock figures are printed, never asserted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <initializer_list>
+#include <string_view>
 
 #include "cpu_hog.hpp"
 #include "firmware_test_support.hpp"
@@ -24,7 +27,10 @@ namespace {
 // vision 3 ms) are about twice the worst p95 measured. p50, p95 and p99 are printed for the record.
 constexpr double kJudgedQuantile = 0.95;
 
-void run_two_seconds_and_check(double quantile, const std::filesystem::path& config = test::kSplConfig) {
+// `p99_tasks`: tasks also judged at p99 (the navigation tasks: their budgets leave a wide margin,
+// and the issue asks for p99).
+void run_two_seconds_and_check(double quantile, const std::filesystem::path& config = test::kSplConfig,
+                               std::initializer_list<std::string_view> p99_tasks = {}) {
   // By default the main job's stack: camera (render thread) and vision included.
   auto text = test::shipped_config_text(config);
   text = test::with_line(text, "clock", "clock = \"realtime\"");
@@ -53,6 +59,9 @@ void run_two_seconds_and_check(double quantile, const std::filesystem::path& con
                 budget_us, hal::to_seconds(st.wall.percentile(0.99)) * 1e6, hal::to_seconds(st.wall.max()) * 1e6);
     EXPECT_GT(st.runs, 0U) << spec.name;
     EXPECT_LE(cpu_us(quantile), budget_us) << spec.name << ": thread CPU time at p" << quantile * 100 << " over budget";
+    if (std::find(p99_tasks.begin(), p99_tasks.end(), spec.name) != p99_tasks.end()) {
+      EXPECT_LE(cpu_us(0.99), budget_us) << spec.name << ": thread CPU time at p99 over budget";
+    }
   }
   std::printf("  wake-up latency p99 %.1f us, max %.1f us; frame overruns %llu, slips %llu (not asserted)\n",
               hal::to_seconds(frames.wake_latency.percentile(0.99)) * 1e6,
@@ -65,7 +74,7 @@ TEST(RealClock, TwoSecondsAt100HzKeepEveryTaskCpuInsideItsBudget) { run_two_seco
 // The hybrid controller at the edge of the woods (P&B Fig. 1 (c)): the planner's first search and
 // its repairs, the arbiter over a scan full of trees.
 TEST(RealClock, NavigationInTheWoodsKeepsEveryTaskCpuInsideItsBudget) {
-  run_two_seconds_and_check(kJudgedQuantile, test::kShippedConfig.parent_path() / "pb_woods.toml");
+  run_two_seconds_and_check(kJudgedQuantile, test::kShippedConfig.parent_path() / "pb_woods.toml", {"planner", "arbiter"});
 }
 
 TEST(RealClock, TwoSecondsAt100HzOnALoadedMachine) {
