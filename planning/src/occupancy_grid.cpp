@@ -71,7 +71,7 @@ int OccupancyGrid::integrate(const hal::LaserScan& scan, const hal::Pose2& pose)
     // Beam angles are in the robot frame with theta's sense (positive to the right), so the
     // world bearing is their sum (hal/geometry.hpp: ahead is (sin θ, cos θ)).
     const double bearing = pose.theta + scan.beam_angle(i);
-    const double r = scan.range[i];
+    const double r = static_cast<double>(scan.range[i]);
     if (mark(pose.x + r * std::sin(bearing), pose.y + r * std::cos(bearing))) ++marked;
   }
   return marked;

@@ -3,7 +3,6 @@
 #include "ringlet/sim_hal/collision.hpp"
 
 #include <cmath>
-#include <ranges>
 
 #include "vec2_math.hpp"
 
@@ -67,6 +66,22 @@ bool inside_polygon(Vec2 p, const Polygon& polygon) noexcept {
   return inside;
 }
 
+/// The indices 0 .. n − 1 as a range (std::views::iota trips clang 14 with libstdc++ 12).
+struct FirstN {
+  std::size_t n;
+  struct Iterator {
+    std::size_t i;
+    std::size_t operator*() const noexcept { return i; }
+    Iterator& operator++() noexcept {
+      ++i;
+      return *this;
+    }
+    bool operator!=(const Iterator& o) const noexcept { return i != o.i; }
+  };
+  [[nodiscard]] Iterator begin() const noexcept { return {0}; }
+  [[nodiscard]] Iterator end() const noexcept { return {n}; }
+};
+
 /// The first hit among the given circles and polygons (and the walls), or +inf beyond max_range.
 template <class CircleIndices, class PolygonIndices>
 double cast_among(const World& world, Vec2 origin, double bearing, double max_range, const CircleIndices& circles,
@@ -85,8 +100,7 @@ double cast_among(const World& world, Vec2 origin, double bearing, double max_ra
 }  // namespace
 
 double cast_ray(const World& world, Vec2 origin, double bearing, double max_range) noexcept {
-  return cast_among(world, origin, bearing, max_range, std::views::iota(std::size_t{0}, world.circles.size()),
-                    std::views::iota(std::size_t{0}, world.polygons.size()));
+  return cast_among(world, origin, bearing, max_range, FirstN{world.circles.size()}, FirstN{world.polygons.size()});
 }
 
 void RayCandidates::reserve(const World& world) {

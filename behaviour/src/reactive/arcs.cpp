@@ -18,7 +18,7 @@ ObstaclePoints obstacles_from_scan(const hal::LaserScan& scan) noexcept {
   for (std::size_t i = 0; i < beams; ++i) {
     if (!scan.valid[i] || !std::isfinite(scan.range[i])) continue;
     // Beam angles have theta's sense (positive to the right); the robot frame's y is to the left.
-    const double a = scan.beam_angle(i), r = scan.range[i];
+    const double a = scan.beam_angle(i), r = static_cast<double>(scan.range[i]);
     o.point[o.count++] = {r * std::cos(a), -r * std::sin(a)};
   }
   return o;
