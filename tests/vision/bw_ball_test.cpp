@@ -121,7 +121,21 @@ struct Column {
   hal::RobotPoint at{1.5, 0.2};
 };
 
-Column detect_column(double half_width) {
+// What is painted (grey 230, non-field) on the grey-100 field: a block `half_width` robot heights
+// either side of the foot, up to a robot's height; optionally field between the legs (a gap
+// `legs_gap` heights wide up to a quarter height) and a ball-sized block `ball_gap` heights below
+// the foot.
+struct ColumnScene {
+  double half_width = 0.25;
+  double legs_gap = 0.0;
+  double ball_gap = 0.0;
+};
+
+Column detect_column(const ColumnScene& scene_spec);
+Column detect_column(double half_width) { return detect_column(ColumnScene{half_width, 0.0, 0.0}); }
+
+Column detect_column(const ColumnScene& scene_spec) {
+  const double half_width = scene_spec.half_width;
   Camera cam;
   const hal::CameraPose pose = cam.pose();
   testing::Scene scene;  // bare field
@@ -143,8 +157,23 @@ Column detect_column(double half_width) {
   const double h = c.height;
   const int x0 = half_width > 0.0 ? static_cast<int>(foot->u - half_width * h) : 0;
   const int x1 = half_width > 0.0 ? static_cast<int>(foot->u + half_width * h) : cam.k.width;
-  for (int y = std::max(0, static_cast<int>(foot->v - h)); y < static_cast<int>(foot->v); ++y) {
-    for (int x = x0; x < x1; ++x) img[static_cast<std::size_t>(y * cam.k.width + x)] = 230;
+  const auto paint = [&](int left, int right, int top, int bottom, std::uint8_t value) {
+    for (int y = std::max(0, top); y < std::min(bottom, cam.k.height); ++y) {
+      for (int x = std::max(0, left); x < std::min(right, cam.k.width); ++x) {
+        img[static_cast<std::size_t>(y * cam.k.width + x)] = value;
+      }
+    }
+  };
+  paint(x0, x1, static_cast<int>(foot->v - h), static_cast<int>(foot->v), 230);
+  if (scene_spec.legs_gap > 0.0) {
+    const double g = 0.5 * scene_spec.legs_gap * h;
+    paint(static_cast<int>(foot->u - g), static_cast<int>(foot->u + g), static_cast<int>(foot->v - 0.25 * h),
+          static_cast<int>(foot->v), 100);
+  }
+  if (scene_spec.ball_gap > 0.0) {
+    const int top = static_cast<int>(foot->v + scene_spec.ball_gap * h);
+    paint(static_cast<int>(foot->u - 0.1 * h), static_cast<int>(foot->u + 0.1 * h), top,
+          top + static_cast<int>(0.2 * h), 230);
   }
   hal::FrameView view = frame.view;
   view.data = img.data();
@@ -166,9 +195,27 @@ TEST(Robots, ColumnStandingOnTheFieldIsFoundAtItsFoot) {
   EXPECT_FALSE(r.verified);
   EXPECT_NEAR(r.foot.u, c.foot.u, 4.0);
   EXPECT_NEAR(r.foot.v, c.foot.v, 2.0);
-  EXPECT_NEAR(r.distance_m, std::hypot(c.at.x, c.at.y), 0.03 * std::hypot(c.at.x, c.at.y));
+  // The lowest non-field row is the feet's near edge: the robot stands foot_depth_m beyond it.
+  const double depth = RobotParams{}.foot_depth_m;
+  EXPECT_NEAR(r.distance_m, std::hypot(c.at.x, c.at.y) + depth, 0.03 * std::hypot(c.at.x, c.at.y));
   EXPECT_NEAR(r.bearing_rad, std::atan2(c.at.y, c.at.x), 0.02);
   EXPECT_NEAR(r.height, h, 0.05 * h);
+}
+
+TEST(Robots, FieldBetweenTheLegsDoesNotSplitTheRobot) {
+  // The columns between the legs end on the field a quarter height up: without joining, each leg
+  // alone would be narrower than a robot's quarter width and dropped.
+  const Column c = detect_column(ColumnScene{0.14, 0.1, 0.0});
+  ASSERT_EQ(c.out.count, 1U);
+  EXPECT_NEAR(c.out.robots[0].foot.u, c.foot.u, 6.0);
+  EXPECT_NEAR(c.out.robots[0].foot.v, c.foot.v, 2.0);
+}
+
+TEST(Robots, ABallBeforeTheFeetIsNotTheFoot) {
+  // A field gap of 0.3 robot heights below the feet, then a ball: the run ends at the feet.
+  const Column c = detect_column(ColumnScene{0.25, 0.0, 0.3});
+  ASSERT_GE(c.out.count, 1U);
+  EXPECT_NEAR(c.out.robots[0].foot.v, c.foot.v, 2.0);
 }
 
 TEST(Robots, NonFieldAcrossTheWholeViewIsNoRobot) {

@@ -30,6 +30,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
   out = RobotList{};
   count_ = 0;
   const int s = classes.step();
+  step_ = s;
   const int col_stride = std::max(s, (std::max(stride, 1) + s - 1) / s * s);
   const int first = classes.first_row();
   const int h = classes.height();
@@ -40,8 +41,21 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     return expected_height_px(k, pose, *p);
   };
 
+  // A candidate goes into the fixed list; when it is full, the farthest gives way.
+  const auto nearer = [](const Candidate& a, const Candidate& b) {
+    return a.foot_row != b.foot_row ? a.foot_row > b.foot_row : a.x_max - a.x_min > b.x_max - b.x_min;
+  };
+  const auto push = [&](const Candidate& c) {
+    if (count_ < cands_.size()) {
+      cands_[count_++] = c;
+      return;
+    }
+    auto farthest = std::min_element(cands_.begin(), cands_.end(), nearer);
+    if (nearer(c, *farthest)) *farthest = c;
+  };
   Candidate open{};
   bool has_open = false;
+  int join = 0;  // columns at most this far from the open candidate's right edge may still join it
   const auto close = [&]() {
     if (!has_open) return;
     has_open = false;
@@ -50,14 +64,8 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     const double width = open.x_max - open.x_min + s;
     const double expected_width = eh * params_.width_m / params_.height_m;
     if (eh <= 0.0 || width < params_.min_width_share * expected_width || width > params_.max_width_share * expected_width) return;
-    if (count_ < cands_.size()) {
-      cands_[count_++] = open;
-    } else {  // full: keep the widest
-      auto narrowest = std::min_element(cands_.begin(), cands_.end(), [](const Candidate& a, const Candidate& b) {
-        return a.x_max - a.x_min < b.x_max - b.x_min;
-      });
-      if (narrowest->x_max - narrowest->x_min < open.x_max - open.x_min) *narrowest = open;
-    }
+    open.height_px = eh;
+    push(open);
   };
 
   for (int x = 0; x < classes.width(); x += col_stride) {
@@ -88,29 +96,35 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
       run_start = -1;
       field_since = -1;
     }
+    const bool near_open = has_open && x - open.x_max <= join;
     if (best_foot < 0) {
-      if (has_open && x - open.x_max > 2 * col_stride) close();
+      if (has_open && !near_open) close();
       continue;
     }
     const double eh = height_at(x + 0.5 * s, best_foot, nullptr);
     const int tolerance = std::max(2 * s, static_cast<int>(0.15 * eh));
-    if (has_open && x - open.x_max <= 2 * col_stride && std::abs(best_foot - open.foot_row) <= tolerance) {
+    if (near_open && std::abs(best_foot - open.foot_row) <= tolerance) {
       open.x_max = x;
       open.foot_row = std::max(open.foot_row, best_foot);
       ++open.columns;
-    } else {
-      close();
-      open = {x, x, best_foot, 1};
-      has_open = true;
+      continue;
     }
+    // A column whose run ends on the field well above the open candidate's feet, close beside them,
+    // sees the field between a robot's legs (or under its arm): the robot may go on after it.
+    if (near_open && best_foot < open.foot_row) continue;
+    close();
+    open = {x, x, best_foot, 1, 0.0};
+    has_open = true;
+    join = std::max(2 * col_stride, static_cast<int>(params_.join_share * eh * params_.width_m / params_.height_m));
   }
   close();
   out.candidates = static_cast<int>(count_);
-  // Widest first (insertion sort: stable, no allocation).
+  // Nearest first: the lowest foot row, then the wider (insertion sort: stable, no allocation). The
+  // nearest obstacles matter most, and a near robot fills its window best.
   for (std::size_t i = 1; i < count_; ++i) {
     const Candidate c = cands_[i];
     std::size_t j = i;
-    for (; j > 0 && cands_[j - 1].x_max - cands_[j - 1].x_min < c.x_max - c.x_min; --j) cands_[j] = cands_[j - 1];
+    for (; j > 0 && nearer(c, cands_[j - 1]); --j) cands_[j] = cands_[j - 1];
     cands_[j] = c;
   }
 
@@ -122,6 +136,11 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     const double u = 0.5 * (c.x_min + c.x_max + s);
     const double eh = height_at(u, c.foot_row, &r.ground);
     if (eh <= 0.0) continue;
+    const double near = std::hypot(r.ground.x, r.ground.y);
+    if (near > 0.0) {
+      const double k_far = 1.0 + params_.foot_depth_m / near;
+      r.ground = {r.ground.x * k_far, r.ground.y * k_far};
+    }
     r.foot = {u, static_cast<double>(c.foot_row)};
     r.height = eh;
     r.width = eh * params_.width_m / params_.height_m;

@@ -267,6 +267,19 @@ EvalReport run_evaluation(const EvalOptions& o) {
       }
       report.robots += score_robots(robots, f.meta.robots, f.meta.intrinsics.width, f.meta.intrinsics.height,
                                     o.robot_match);
+      std::vector<FoundRobot> robot_proposals;
+      if (result.robots.candidates > 0) {
+        const double s = pipeline->robot_candidate_step();
+        const double aspect = o.vision.robot.width_m / o.vision.robot.height_m;
+        for (const RobotCandidate& c : pipeline->robot_candidates()) {
+          const double u = 0.5 * (c.x_min + c.x_max + s);
+          const double w = aspect * c.height_px;
+          robot_proposals.push_back({u - 0.5 * w, c.foot_row - c.height_px, w, c.height_px, u,
+                                     static_cast<double>(c.foot_row), 0.0});
+        }
+      }
+      report.robot_proposals += score_robots(robot_proposals, f.meta.robots, f.meta.intrinsics.width,
+                                             f.meta.intrinsics.height, o.robot_match);
     }
     const auto count_arcs = [&](DetectorReport& d, const std::vector<Segment2>& found) {
       const std::size_t arcs = count_arc_false_positives(found, f.meta.lines, rings, o.match);

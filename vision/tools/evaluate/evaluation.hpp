@@ -96,6 +96,7 @@ struct EvalReport {
   ObjectCounts ball_proposals{};     // every black-and-white ball candidate scored as a detection:
                                      // its recall is the share of expected balls proposed at all
   ObjectCounts robots{};
+  ObjectCounts robot_proposals{};    // every robot candidate scored as a detection (the same for robots)
   BallMatchParams ball_match{};
   RobotMatchParams robot_match{};
   /// Hough's median time / Ringlet's: > 1 means Ringlet is faster.

@@ -99,6 +99,9 @@ void print_objects(const EvalReport& r, std::ostream& os) {
      << " x box width, " << rm.min_foot_px << " px) or box IoU >= " << rm.min_iou << "; expected within "
      << rm.max_distance_m << " m, foot in the image, >= " << rm.min_visible * 100.0 << " % visible\n";
   print(r.robots, "relative foot distance error");
+  os << "  proposed: " << r.robot_proposals.recalled << " of the " << r.robot_proposals.expected
+     << " expected robots have a candidate (" << fmt("%.3f", r.robot_proposals.recall())
+     << ": the most the classifier could recall)\n";
 }
 
 }  // namespace
@@ -189,6 +192,8 @@ nlohmann::json report_json(const EvalReport& r) {
           {"ball_proposals", {{"expected", r.ball_proposals.expected}, {"recalled", r.ball_proposals.recalled},
                               {"recall", r.ball_proposals.recall()}, {"candidates", r.ball_proposals.detections}}},
           {"robots", object_json(r.robots, "foot_distance_error")},
+          {"robot_proposals", {{"expected", r.robot_proposals.expected}, {"recalled", r.robot_proposals.recalled},
+                               {"recall", r.robot_proposals.recall()}, {"candidates", r.robot_proposals.detections}}},
           {"ball_match", {{"centre_share", r.ball_match.centre_share}, {"min_centre_px", r.ball_match.min_centre_px},
                           {"max_distance_m", r.ball_match.max_distance_m}, {"min_visible", r.ball_match.min_visible}}},
           {"robot_match", {{"foot_share", r.robot_match.foot_share}, {"min_foot_px", r.robot_match.min_foot_px},

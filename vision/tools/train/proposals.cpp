@@ -33,7 +33,7 @@ std::vector<Proposal> detector_proposals(HogTarget target, const std::filesystem
       out.push_back({ball_window(config.bw_ball, HogParams::ball(), c.centre, c.radius), c.centre, c.radius});
     }
   } else {
-    // Unverified, the detector reports every candidate (up to kMaxRobots, widest first), at the
+    // Unverified, the detector reports every candidate (up to kMaxRobots, nearest first), at the
     // pipeline's robot stride.
     RobotDetector detector(config.robot);
     RobotList list;

@@ -147,6 +147,9 @@ class VisionPipeline {
   /// The black-and-white ball detector's candidates of the last frame its stage ran on, best ranked first (the
   /// evaluation measures how many true balls get one at all: the ceiling of the ball's recall).
   [[nodiscard]] std::span<const BallCandidate> ball_candidates() const noexcept { return bw_ball_.candidates(); }
+  /// The robot detector's candidates of the last frame its stage ran on, nearest first.
+  [[nodiscard]] std::span<const RobotCandidate> robot_candidates() const noexcept { return robots_.candidates(); }
+  [[nodiscard]] int robot_candidate_step() const noexcept { return robots_.step(); }
   [[nodiscard]] const VisionConfig& config() const noexcept { return config_; }
   [[nodiscard]] const ColourTable& table() const noexcept { return table_; }
   [[nodiscard]] const AdaptiveClassifier& adaptive() const noexcept { return adaptive_; }
