@@ -28,6 +28,18 @@ double share(const testing::Scene& scene, hal::RobotPoint a, hal::RobotPoint b, 
   return LineCheck(classes, cam.k, pose, params).share(a, b);
 }
 
+// The same picture, asked for the painted part of [a, b].
+LineCheck::Span painted(const testing::Scene& scene, hal::RobotPoint a, hal::RobotPoint b) {
+  const Camera cam;
+  const auto f = testing::render(scene, cam, hal::PixelFormat::kYuyv);
+  std::vector<int> rows(640);
+  const int first = horizon_rows(cam.k, cam.pose(), 2, rows);
+  ClassImage classes(640, 480);
+  EXPECT_TRUE(classes.classify(f.view, ColourTable::from_thresholds({}), first, 1));
+  const hal::CameraPose pose = cam.pose();
+  return LineCheck(classes, cam.k, pose, {}).painted_span(a, b);
+}
+
 testing::Scene one_line() {
   testing::Scene scene;
   scene.lines = {{{1.5, -2.0}, {1.5, 2.0}}};  // across the view, 1.5 m ahead
@@ -60,6 +72,22 @@ TEST(LineCheck, ALineHalfHiddenByTheBallStillPasses) {
   const double s = share(scene, {1.5, -0.4}, {1.5, 0.4});
   EXPECT_GE(s, 0.5);
   EXPECT_LT(s, 1.0) << "the samples behind the ball do not look like paint";
+}
+
+TEST(LineCheck, APieceRunningPastThePaintIsCutBackToIt) {
+  // The paint runs along y from -0.4 to 0.4 at x = 1.5; the piece runs on to y = 0.8 (a fit
+  // carried on by stray points in line with it).
+  testing::Scene scene;
+  scene.lines = {{{1.5, -0.4}, {1.5, 0.4}}};
+  const LineCheck::Span s = painted(scene, {1.5, -0.4}, {1.5, 0.8});
+  EXPECT_DOUBLE_EQ(s.from, 0.0);
+  // Paint ends two thirds of the way along (0.8 of 1.2 m); the cut lies within one of the 24
+  // samples (0.05 m) of it.
+  EXPECT_NEAR(s.to, 0.8 / 1.2, 1.0 / 24.0 + 1e-9);
+  // All along the paint: nothing to cut.
+  const LineCheck::Span all = painted(one_line(), {1.5, -0.8}, {1.5, 0.8});
+  EXPECT_DOUBLE_EQ(all.from, 0.0);
+  EXPECT_DOUBLE_EQ(all.to, 1.0);
 }
 
 TEST(LineCheck, OffOrOutOfThePictureIsNotJudged) {

@@ -56,42 +56,59 @@ bool LineCheck::looks_like_line(double cx, double cy, double nx, double ny, doub
   return true;
 }
 
-double LineCheck::share(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
+int LineCheck::judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, int n) const noexcept {
   const double gx = b.x - a.x, gy = b.y - a.y;
   const double len = std::sqrt(gx * gx + gy * gy);
-  if (len < 1e-9) return 1.0;
   // Half the painted width across the line, on the ground.
   const double wx = -gy / len * params_.line_width_m / 2.0;
   const double wy = gx / len * params_.line_width_m / 2.0;
+  const double t = (static_cast<double>(i) + 0.5) / static_cast<double>(n);
+  const double px = a.x + t * gx, py = a.y + t * gy;
+  const auto c = hal::project(k_, pose_, {px, py, 0.0});
+  const auto e = hal::project(k_, pose_, {px + wx, py + wy, 0.0});
+  if (!c || !e) return -1;
+  if (c->u < 0.0 || c->u >= classes_.width() || c->v < classes_.first_row() || c->v >= classes_.height()) return -1;
+  const double ex = e->u - c->u, ey = e->v - c->v;
+  const double h = std::sqrt(ex * ex + ey * ey);
+  // The normal in the picture: across the projected line, i.e. perpendicular to its image
+  // direction (the projected width vector is not perpendicular in a perspective view).
+  const auto c2 = hal::project(k_, pose_, {px + gx / len * 0.05, py + gy / len * 0.05, 0.0});
+  if (!c2) return -1;
+  double dx = c2->u - c->u, dy = c2->v - c->v;
+  const double dl = std::sqrt(dx * dx + dy * dy);
+  if (dl < 1e-9) return -1;
+  dx /= dl;
+  dy /= dl;
+  return looks_like_line(c->u, c->v, -dy, dx, std::max(h, 0.5)) ? 1 : 0;
+}
+
+double LineCheck::share(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
+  if (std::hypot(b.x - a.x, b.y - a.y) < 1e-9) return 1.0;
   const int n = std::max(params_.samples, 1);
   int judged = 0;
   int passed = 0;
   for (int i = 0; i < n; ++i) {
-    const double t = (static_cast<double>(i) + 0.5) / static_cast<double>(n);
-    const double px = a.x + t * gx, py = a.y + t * gy;
-    const auto c = hal::project(k_, pose_, {px, py, 0.0});
-    const auto e = hal::project(k_, pose_, {px + wx, py + wy, 0.0});
-    if (!c || !e) continue;
-    if (c->u < 0.0 || c->u >= classes_.width() || c->v < classes_.first_row() || c->v >= classes_.height()) continue;
-    const double ex = e->u - c->u, ey = e->v - c->v;
-    const double h = std::sqrt(ex * ex + ey * ey);
-    // The normal in the picture: across the projected line, i.e. perpendicular to its image
-    // direction (the projected width vector is not perpendicular in a perspective view).
-    const auto c2 = hal::project(k_, pose_, {px + gx / len * 0.05, py + gy / len * 0.05, 0.0});
-    if (!c2) continue;
-    ++judged;
-    double dx = c2->u - c->u, dy = c2->v - c->v;
-    const double dl = std::sqrt(dx * dx + dy * dy);
-    if (dl < 1e-9) {
-      --judged;
-      continue;
-    }
-    dx /= dl;
-    dy /= dl;
-    if (looks_like_line(c->u, c->v, -dy, dx, std::max(h, 0.5))) ++passed;
+    const int r = judge(a, b, i, n);
+    judged += r >= 0 ? 1 : 0;
+    passed += r > 0 ? 1 : 0;
   }
   if (judged < params_.min_judged) return 1.0;
   return static_cast<double>(passed) / static_cast<double>(judged);
+}
+
+LineCheck::Span LineCheck::painted_span(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
+  if (!params_.enabled || std::hypot(b.x - a.x, b.y - a.y) < 1e-9) return {};
+  const int n = std::max(params_.samples, 1);
+  // From each end inwards: samples that are judged and fail are cut; one that passes, or one
+  // outside the picture (not judged: nothing to say), stops the cut.
+  int first = 0;
+  while (first < n && judge(a, b, first, n) == 0) ++first;
+  if (first == n) return {};
+  int last = n - 1;
+  while (last > first && judge(a, b, last, n) == 0) --last;
+  // The cut goes to the middle between the last failing and the first passing sample.
+  const double dn = static_cast<double>(n);
+  return {first == 0 ? 0.0 : static_cast<double>(first) / dn, last == n - 1 ? 1.0 : static_cast<double>(last + 1) / dn};
 }
 
 }  // namespace ringlet::vision

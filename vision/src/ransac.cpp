@@ -12,6 +12,21 @@
 namespace ringlet::vision {
 namespace {
 
+// Cuts a reported segment's ends back to where the picture shows paint (LineCheck::painted_span),
+// keeping its line; the image ends follow.
+void trim_to_paint(FieldLine& f, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+                   const LineCheck& check) noexcept {
+  const LineCheck::Span span = check.painted_span(f.ground_start, f.ground_end);
+  if (span.from <= 0.0 && span.to >= 1.0) return;
+  const hal::RobotPoint a = f.ground_start, b = f.ground_end;
+  const auto at = [&](double t) { return hal::RobotPoint{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; };
+  f.ground_start = at(span.from);
+  f.ground_end = at(span.to);
+  f.length_m *= span.to - span.from;
+  if (const auto p0 = hal::project(k, pose, {f.ground_start.x, f.ground_start.y, 0.0})) f.image_start = *p0;
+  if (const auto p1 = hal::project(k, pose, {f.ground_end.x, f.ground_end.y, 0.0})) f.image_end = *p1;
+}
+
 double norm(double x, double y) noexcept { return std::hypot(x, y); }
 
 bool on_circle(const CentreCircle& c, const hal::RobotPoint& q, double band) noexcept {
@@ -276,8 +291,8 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
       ++out.stats.segments_dropped;
       return;
     }
-    const hal::RobotPoint g0 = line.at(t0);
-    const hal::RobotPoint g1 = line.at(t1);
+    hal::RobotPoint g0 = line.at(t0);
+    hal::RobotPoint g1 = line.at(t1);
     const auto p0 = hal::project(k, pose, {g0.x, g0.y, 0.0});
     const auto p1 = hal::project(k, pose, {g1.x, g1.y, 0.0});
     const hal::Pixel i0 = p0 ? *p0 : s.pixels_[static_cast<std::size_t>(s.order_[first].second)];
@@ -300,6 +315,7 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
     f.inliers = count;
     f.image_start = i0;
     f.image_end = i1;
+    if (check != nullptr) trim_to_paint(f, k, pose, *check);
   };
   std::size_t first = 0;
   for (std::size_t i = 1; i <= s.order_.size(); ++i) {
@@ -355,6 +371,7 @@ void RansacLineFinder::merge(LineSet& out, const hal::CameraIntrinsics& k, const
         m.inliers = fa.inliers + fb.inliers;
         if (const auto p0 = hal::project(k, pose, {m.ground_start.x, m.ground_start.y, 0.0})) m.image_start = *p0;
         if (const auto p1 = hal::project(k, pose, {m.ground_end.x, m.ground_end.y, 0.0})) m.image_end = *p1;
+        if (check != nullptr) trim_to_paint(m, k, pose, *check);
         out.lines[a] = m;
         for (std::size_t c = b + 1; c < out.count; ++c) out.lines[c - 1] = out.lines[c];
         --out.count;

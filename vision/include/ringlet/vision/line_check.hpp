@@ -43,7 +43,18 @@ class LineCheck {
     return !params_.enabled || share(a, b) >= params_.min_share;
   }
 
+  /// The part of [a, b] between its first and last samples that look like paint, as fractions of
+  /// the way from a to b ({0, 1}: nothing to cut). Stray collinear points (a robot's white sole,
+  /// the ball) can carry a fit past the painted line's end; the end samples show it.
+  struct Span {
+    double from = 0.0;
+    double to = 1.0;
+  };
+  [[nodiscard]] Span painted_span(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept;
+
  private:
+  // Sample i of n along [a, b]: 1 looks like paint, 0 does not, -1 not judged (outside the picture).
+  [[nodiscard]] int judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, int n) const noexcept;
   // The class at (x, y) rounded to the sampled grid; kOther outside the classified area.
   [[nodiscard]] ColourClass class_at(double x, double y) const noexcept;
   // One sample: image point c of the centre line, unit normal (nx, ny), expected half width h.
