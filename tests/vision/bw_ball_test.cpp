@@ -129,10 +129,11 @@ struct ColumnScene {
   double half_width = 0.25;
   double legs_gap = 0.0;
   double ball_gap = 0.0;
+  double body_gap = 0.0;  // a field stripe this many heights tall across the body, 0.3 h above the foot
 };
 
 Column detect_column(const ColumnScene& scene_spec);
-Column detect_column(double half_width) { return detect_column(ColumnScene{half_width, 0.0, 0.0}); }
+Column detect_column(double half_width) { return detect_column(ColumnScene{half_width, 0.0, 0.0, 0.0}); }
 
 Column detect_column(const ColumnScene& scene_spec) {
   const double half_width = scene_spec.half_width;
@@ -170,6 +171,9 @@ Column detect_column(const ColumnScene& scene_spec) {
     paint(static_cast<int>(foot->u - g), static_cast<int>(foot->u + g), static_cast<int>(foot->v - 0.25 * h),
           static_cast<int>(foot->v), 100);
   }
+  if (scene_spec.body_gap > 0.0) {
+    paint(x0, x1, static_cast<int>(foot->v - (0.3 + scene_spec.body_gap) * h), static_cast<int>(foot->v - 0.3 * h), 100);
+  }
   if (scene_spec.ball_gap > 0.0) {
     const int top = static_cast<int>(foot->v + scene_spec.ball_gap * h);
     paint(static_cast<int>(foot->u - 0.1 * h), static_cast<int>(foot->u + 0.1 * h), top,
@@ -205,15 +209,27 @@ TEST(Robots, ColumnStandingOnTheFieldIsFoundAtItsFoot) {
 TEST(Robots, FieldBetweenTheLegsDoesNotSplitTheRobot) {
   // The columns between the legs end on the field a quarter height up: without joining, each leg
   // alone would be narrower than a robot's quarter width and dropped.
-  const Column c = detect_column(ColumnScene{0.14, 0.1, 0.0});
+  const Column c = detect_column(ColumnScene{0.12, 0.1, 0.0, 0.0});
   ASSERT_EQ(c.out.count, 1U);
   EXPECT_NEAR(c.out.robots[0].foot.u, c.foot.u, 6.0);
   EXPECT_NEAR(c.out.robots[0].foot.v, c.foot.v, 2.0);
 }
 
 TEST(Robots, ABallBeforeTheFeetIsNotTheFoot) {
-  // A field gap of 0.3 robot heights below the feet, then a ball: the run ends at the feet.
-  const Column c = detect_column(ColumnScene{0.25, 0.0, 0.3});
+  // A ball 0.2 robot heights tall lies before the feet. With 0.3 heights of field between, the gap
+  // is too long to bridge; with 0.12 it is bridged, but what follows it is shorter than twice the
+  // gap: not legs. Either way the run ends at the feet.
+  for (const double gap : {0.3, 0.12}) {
+    const Column c = detect_column(ColumnScene{0.25, 0.0, gap, 0.0});
+    ASSERT_GE(c.out.count, 1U) << gap;
+    EXPECT_NEAR(c.out.robots[0].foot.v, c.foot.v, 2.0) << gap;
+  }
+}
+
+TEST(Robots, AShadedStripeAcrossTheBodyIsBridged) {
+  // Grey parts in shade pass for carpet: a field stripe 0.05 heights tall across the body, the legs
+  // going on 0.3 heights below it. Not bridged, the run above it (0.65 heights) would stand there.
+  const Column c = detect_column(ColumnScene{0.25, 0.0, 0.0, 0.05});
   ASSERT_GE(c.out.count, 1U);
   EXPECT_NEAR(c.out.robots[0].foot.v, c.foot.v, 2.0);
 }

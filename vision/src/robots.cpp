@@ -76,10 +76,16 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     int run_start = -1;
     int field_since = -1;  // first field row after the current run (-1: inside the run)
     double run_eh = 0.0;   // the expected height at field_since (computed once per gap)
+    int gap_at = -1;       // the last bridged gap inside the run: where it began ...
+    int gap_end = -1;      // ... and where non-field resumed
     for (int y = first; y <= h; y += s) {
       const bool nf = y < h && classes.at(x, y) != ColourClass::kField;
       if (nf) {
         if (run_start < 0) run_start = y;
+        if (field_since >= 0) {
+          gap_at = field_since;
+          gap_end = y;
+        }
         field_since = -1;
         continue;
       }
@@ -89,12 +95,21 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
         run_eh = height_at(x + 0.5 * s, field_since, nullptr);  // the run's foot row
       }
       if (y < h && y - field_since < std::max(2 * s, static_cast<int>(params_.max_gap_share * run_eh))) continue;
-      if (field_since < h && run_eh >= params_.min_height_px &&
-          (field_since - run_start >= params_.min_height_share * run_eh || run_start == first)) {
-        best_foot = field_since;
+      // What followed the last bridged gap must be longer than twice the gap to belong to the
+      // robot (its legs below a shaded part); shorter, it lies before the feet (the ball).
+      int foot = field_since;
+      if (gap_at >= 0 && field_since - gap_end < 2 * (gap_end - gap_at)) {
+        foot = gap_at;
+        run_eh = height_at(x + 0.5 * s, foot, nullptr);
+      }
+      if (foot < h && run_eh >= params_.min_height_px &&
+          (foot - run_start >= params_.min_height_share * run_eh || run_start == first)) {
+        best_foot = foot;
       }
       run_start = -1;
       field_since = -1;
+      gap_at = -1;
+      gap_end = -1;
     }
     const bool near_open = has_open && x - open.x_max <= join;
     if (best_foot < 0) {

@@ -8,8 +8,9 @@
 // standing NAO (0.574 m: the projection of the point that far above the foot); a run counts when
 // it is at least `min_height_share` of that tall or reaches the top of the classified area (the
 // robot continues above the horizon margin). Field gaps up to `max_gap_share` of that height inside
-// a run are bridged (shaded grey parts pass for carpet); longer ones end it (a ball before the feet
-// must not become the foot). Neighbouring columns whose foot rows agree form one candidate; columns
+// a run are bridged (shaded grey parts pass for carpet) when what follows the gap is longer than
+// twice the gap (the legs below); longer gaps, or a short piece after one, end it there (a ball
+// before the feet must not become the foot). Neighbouring columns whose foot rows agree form one candidate; columns
 // up to `join_share` of a NAO's width apart still join it, and a column in between whose run ends
 // higher up (the field seen between the legs) does not break it. A candidate narrower than
 // `min_width_share` of a NAO's width is a line or a post.
@@ -50,7 +51,7 @@ struct RobotParams {
   double max_gap_share = 0.2;      // field gaps inside a run up to this × expected height are bridged
   double join_share = 0.3;         // columns up to this × expected width apart join one candidate
                                    //   (the field seen between a robot's legs)
-  double min_width_share = 0.25;   // candidate width / expected width ...
+  double min_width_share = 0.15;   // candidate width / expected width (a NAO seen side on) ...
   double max_width_share = 3.0;    // ... at most this (two robots side by side; the floor beyond
                                    //   the carpet is a "non-field run on the field" too, but wide)
   double window_height = 64.0 / 56.0;  // window height / expected robot height (margin above and below)
