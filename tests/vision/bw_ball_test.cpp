@@ -130,10 +130,11 @@ struct ColumnScene {
   double legs_gap = 0.0;
   double ball_gap = 0.0;
   double body_gap = 0.0;  // a field stripe this many heights tall across the body, 0.3 h above the foot
+  hal::RobotPoint second{};  // another robot (ground point, robot frame) drawn first, so behind; 0: none
 };
 
 Column detect_column(const ColumnScene& scene_spec);
-Column detect_column(double half_width) { return detect_column(ColumnScene{half_width, 0.0, 0.0, 0.0}); }
+Column detect_column(double half_width) { return detect_column(ColumnScene{half_width, 0.0, 0.0, 0.0, {}}); }
 
 Column detect_column(const ColumnScene& scene_spec) {
   const double half_width = scene_spec.half_width;
@@ -165,6 +166,14 @@ Column detect_column(const ColumnScene& scene_spec) {
       }
     }
   };
+  if (scene_spec.second.x > 0.0) {
+    const auto f2 = hal::project(cam.k, pose, {scene_spec.second.x, scene_spec.second.y, 0.0});
+    EXPECT_TRUE(f2.has_value());
+    if (!f2) return c;
+    const double h2 = d.expected_height_px(cam.k, pose, scene_spec.second);
+    paint(static_cast<int>(f2->u - 0.25 * h2), static_cast<int>(f2->u + 0.25 * h2), static_cast<int>(f2->v - h2),
+          static_cast<int>(f2->v), 230);
+  }
   paint(x0, x1, static_cast<int>(foot->v - h), static_cast<int>(foot->v), 230);
   if (scene_spec.legs_gap > 0.0) {
     const double g = 0.5 * scene_spec.legs_gap * h;
@@ -209,7 +218,7 @@ TEST(Robots, ColumnStandingOnTheFieldIsFoundAtItsFoot) {
 TEST(Robots, FieldBetweenTheLegsDoesNotSplitTheRobot) {
   // The columns between the legs end on the field a quarter height up: without joining, each leg
   // alone would be narrower than a robot's quarter width and dropped.
-  const Column c = detect_column(ColumnScene{0.12, 0.1, 0.0, 0.0});
+  const Column c = detect_column(ColumnScene{0.12, 0.1, 0.0, 0.0, {}});
   ASSERT_EQ(c.out.count, 1U);
   EXPECT_NEAR(c.out.robots[0].foot.u, c.foot.u, 6.0);
   EXPECT_NEAR(c.out.robots[0].foot.v, c.foot.v, 2.0);
@@ -220,16 +229,43 @@ TEST(Robots, ABallBeforeTheFeetIsNotTheFoot) {
   // is too long to bridge; with 0.12 it is bridged, but what follows it is shorter than twice the
   // gap: not legs. Either way the run ends at the feet.
   for (const double gap : {0.3, 0.12}) {
-    const Column c = detect_column(ColumnScene{0.25, 0.0, gap, 0.0});
+    const Column c = detect_column(ColumnScene{0.25, 0.0, gap, 0.0, {}});
     ASSERT_GE(c.out.count, 1U) << gap;
     EXPECT_NEAR(c.out.robots[0].foot.v, c.foot.v, 2.0) << gap;
   }
 }
 
+TEST(Robots, ARobotJustBehindAnotherIsFoundToo) {
+  // The second robot stands 0.7 m farther, mostly hidden: only 0.15 of the first robot's height
+  // (of its image) shows beside it, on the right. Its columns end higher up, right beside the
+  // first robot's, as the field between the legs would, all within the reach that joins legs.
+  // Once the first robot ends, they are a candidate of their own.
+  Camera cam;
+  const hal::CameraPose pose = cam.pose();
+  const RobotDetector d(RobotParams{});
+  const hal::RobotPoint first{1.5, 0.2};
+  const auto f1 = hal::project(cam.k, pose, {first.x, first.y, 0.0});
+  ASSERT_TRUE(f1.has_value());
+  const double h1 = d.expected_height_px(cam.k, pose, first);
+  hal::RobotPoint second{2.2, 0.2};
+  for (; second.y > -1.0; second.y -= 0.005) {  // to the right until 0.15 h1 of it shows
+    const auto f2 = hal::project(cam.k, pose, {second.x, second.y, 0.0});
+    ASSERT_TRUE(f2.has_value());
+    if (f2->u + 0.25 * d.expected_height_px(cam.k, pose, second) - (f1->u + 0.25 * h1) >= 0.15 * h1) break;
+  }
+  const Column c = detect_column(ColumnScene{0.25, 0.0, 0.0, 0.0, second});
+  ASSERT_EQ(c.out.count, 2U);
+  const RobotDetection& near = c.out.robots[0];  // nearest first
+  const RobotDetection& far = c.out.robots[1];
+  EXPECT_NEAR(near.foot.v, c.foot.v, 2.0);
+  EXPECT_LT(far.foot.v, near.foot.v - 20.0);
+  EXPECT_GT(far.foot.u, near.foot.u);
+}
+
 TEST(Robots, AShadedStripeAcrossTheBodyIsBridged) {
   // Grey parts in shade pass for carpet: a field stripe 0.05 heights tall across the body, the legs
   // going on 0.3 heights below it. Not bridged, the run above it (0.65 heights) would stand there.
-  const Column c = detect_column(ColumnScene{0.25, 0.0, 0.0, 0.05});
+  const Column c = detect_column(ColumnScene{0.25, 0.0, 0.0, 0.05, {}});
   ASSERT_GE(c.out.count, 1U);
   EXPECT_NEAR(c.out.robots[0].foot.v, c.foot.v, 2.0);
 }

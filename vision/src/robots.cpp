@@ -53,19 +53,45 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     auto farthest = std::min_element(cands_.begin(), cands_.end(), nearer);
     if (nearer(c, *farthest)) *farthest = c;
   };
-  Candidate open{};
-  bool has_open = false;
-  int join = 0;  // columns at most this far from the open candidate's right edge may still join it
-  const auto close = [&]() {
-    if (!has_open) return;
-    has_open = false;
-    const double u = 0.5 * (open.x_min + open.x_max + s);
-    const double eh = height_at(u, open.foot_row, nullptr);
-    const double width = open.x_max - open.x_min + s;
+  // Ends a candidate: kept when it is about a robot wide at its foot.
+  const auto finish = [&](Candidate c) {
+    const double u = 0.5 * (c.x_min + c.x_max + s);
+    const double eh = height_at(u, c.foot_row, nullptr);
+    const double width = c.x_max - c.x_min + s;
     const double expected_width = eh * params_.width_m / params_.height_m;
     if (eh <= 0.0 || width < params_.min_width_share * expected_width || width > params_.max_width_share * expected_width) return;
-    open.height_px = eh;
-    push(open);
+    c.height_px = eh;
+    push(c);
+  };
+  // The open candidate, and the columns beside it whose runs end higher up (a shadow): the field
+  // between its legs when the open one goes on after them, else something farther away of its own.
+  Candidate open{};
+  bool has_open = false;
+  Candidate shadow{};
+  bool has_shadow = false;
+  int join = 0;  // columns at most this far from the open candidate's right edge may still join it
+  int last_foot = 0;  // the foot row of the open candidate's last column
+  const auto join_for = [&](int foot_row, int x) {
+    const double eh = height_at(x + 0.5 * s, foot_row, nullptr);
+    return std::max(2 * col_stride, static_cast<int>(params_.join_share * eh * params_.width_m / params_.height_m));
+  };
+  const auto start = [&](int x, int foot) {
+    open = {x, x, foot, 1, 0.0};
+    has_open = true;
+    last_foot = foot;
+    join = join_for(foot, x);
+  };
+  const auto close = [&]() {  // the open candidate ends; its shadow, if any, takes its place
+    if (!has_open) return;
+    finish(open);
+    has_open = false;
+    if (has_shadow) {
+      has_shadow = false;
+      open = shadow;
+      has_open = true;
+      last_foot = shadow.foot_row;
+      join = join_for(shadow.foot_row, shadow.x_max);
+    }
   };
 
   for (int x = 0; x < classes.width(); x += col_stride) {
@@ -111,28 +137,41 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
       gap_at = -1;
       gap_end = -1;
     }
-    const bool near_open = has_open && x - open.x_max <= join;
-    if (best_foot < 0) {
-      if (has_open && !near_open) close();
-      continue;
-    }
+    // The open candidate (and a shadow promoted in its place) out of reach ends.
+    while (has_open && x - open.x_max > join) close();
+    if (best_foot < 0) continue;
     const double eh = height_at(x + 0.5 * s, best_foot, nullptr);
-    const int tolerance = std::max(2 * s, static_cast<int>(0.15 * eh));
-    if (near_open && std::abs(best_foot - open.foot_row) <= tolerance) {
+    const int tolerance = std::max(2 * s, static_cast<int>(params_.foot_tolerance_share * eh));
+    if (has_open && std::abs(best_foot - last_foot) <= tolerance) {
       open.x_max = x;
       open.foot_row = std::max(open.foot_row, best_foot);
       ++open.columns;
+      last_foot = best_foot;
+      has_shadow = false;  // it was the field between the legs
       continue;
     }
-    // A column whose run ends on the field well above the open candidate's feet, close beside them,
-    // sees the field between a robot's legs (or under its arm): the robot may go on after it.
-    if (near_open && best_foot < open.foot_row) continue;
-    close();
-    open = {x, x, best_foot, 1, 0.0};
-    has_open = true;
-    join = std::max(2 * col_stride, static_cast<int>(params_.join_share * eh * params_.width_m / params_.height_m));
+    if (has_open && best_foot < open.foot_row) {
+      if (has_shadow && x - shadow.x_max <= 2 * col_stride && std::abs(best_foot - shadow.foot_row) <= tolerance) {
+        shadow.x_max = x;
+        shadow.foot_row = std::max(shadow.foot_row, best_foot);
+        ++shadow.columns;
+      } else {
+        if (has_shadow) finish(shadow);
+        shadow = {x, x, best_foot, 1, 0.0};
+        has_shadow = true;
+      }
+      continue;
+    }
+    // Lower (nearer) than the open candidate, or nothing open: a new candidate starts.
+    if (has_open) {
+      finish(open);
+      has_open = false;
+    }
+    if (has_shadow) finish(shadow);
+    has_shadow = false;
+    start(x, best_foot);
   }
-  close();
+  while (has_open) close();
   out.candidates = static_cast<int>(count_);
   // Nearest first: the lowest foot row, then the wider (insertion sort: stable, no allocation). The
   // nearest obstacles matter most, and a near robot fills its window best.

@@ -10,9 +10,12 @@
 // robot continues above the horizon margin). Field gaps up to `max_gap_share` of that height inside
 // a run are bridged (shaded grey parts pass for carpet) when what follows the gap is longer than
 // twice the gap (the legs below); longer gaps, or a short piece after one, end it there (a ball
-// before the feet must not become the foot). Neighbouring columns whose foot rows agree form one candidate; columns
-// up to `join_share` of a NAO's width apart still join it, and a column in between whose run ends
-// higher up (the field seen between the legs) does not break it. A candidate narrower than
+// before the feet must not become the foot). Neighbouring columns whose foot rows agree (within
+// `foot_tolerance_share` of that height, column to column) form one candidate; columns up to
+// `join_share` of a NAO's width apart still join it. Columns beside it whose runs end higher up are
+// held apart (a shadow): the field between its legs when the candidate goes on after them, else
+// something farther away, a candidate of its own once the near one has ended (a robot half hidden
+// behind another). A candidate narrower than
 // `min_width_share` of a NAO's width is a line or a post.
 //
 // Ranking: nearest first (lowest foot row, then the wider): the nearest obstacles matter most and
@@ -49,7 +52,8 @@ struct RobotParams {
   double min_height_px = 16.0;     // robots smaller in the image (≈ 9 m away) are not looked for
   double min_height_share = 0.4;   // run length / expected height
   double max_gap_share = 0.2;      // field gaps inside a run up to this × expected height are bridged
-  double join_share = 0.3;         // columns up to this × expected width apart join one candidate
+  double foot_tolerance_share = 0.1;  // neighbouring columns' foot rows agree within this × expected height
+  double join_share = 0.4;         // columns up to this × expected width apart join one candidate
                                    //   (the field seen between a robot's legs)
   double min_width_share = 0.15;   // candidate width / expected width (a NAO seen side on) ...
   double max_width_share = 3.0;    // ... at most this (two robots side by side; the floor beyond
