@@ -262,6 +262,57 @@ TEST(Robots, ARobotJustBehindAnotherIsFoundToo) {
   EXPECT_GT(far.foot.u, near.foot.u);
 }
 
+TEST(Robots, WhenTheListIsFullTheFarthestGiveWay) {
+  // 18 narrow far "robots" fill the 16 places first, then 5 nearer ones come (further right):
+  // every nearer one must be kept, the farthest giving way.
+  Camera cam;
+  const hal::CameraPose pose = cam.pose();
+  const RobotDetector probe(RobotParams{});
+  const auto height_at_row = [&](int v) {
+    const auto g = hal::pixel_to_ground(cam.k, pose, {320.0, v + 0.5});
+    return g ? probe.expected_height_px(cam.k, pose, *g) : 0.0;
+  };
+  int far_row = 0;
+  while (far_row < cam.k.height && height_at_row(far_row) < 40.0) ++far_row;
+  ASSERT_LT(far_row + 60, cam.k.height);
+  ColourThresholds t;
+  t.field = {50, 150, 100, 156, 100, 156};
+  t.line = {200, 255, 100, 156, 100, 156};
+  t.ball = {0, 0, 0, 0, 0, 0};
+  std::vector<std::uint8_t> img(static_cast<std::size_t>(cam.k.width * cam.k.height), 100);
+  std::vector<int> near_rows;
+  // Far ones 8 px wide every 24 px; nearer ones (4 rows lower each) 16 px wide every 40 px: wide
+  // enough for their distance, too far apart to join.
+  for (int b = 0; b < 23; ++b) {
+    const bool near = b >= 18;
+    const int foot = near ? far_row + 4 * (b - 17) : far_row;
+    if (near) near_rows.push_back(foot);
+    const int left = near ? 432 + 40 * (b - 18) : 24 * b;
+    const int top = std::max(0, foot - static_cast<int>(height_at_row(foot)));
+    for (int y = top; y < foot; ++y) {
+      for (int x = left; x < left + (near ? 16 : 8); ++x) img[static_cast<std::size_t>(y * cam.k.width + x)] = 230;
+    }
+  }
+  auto frame = testing::render(testing::Scene{}, cam, hal::PixelFormat::kGray8);
+  hal::FrameView view = frame.view;
+  view.data = img.data();
+  view.stride = cam.k.width;
+  view.format = hal::PixelFormat::kGray8;
+  ClassImage classes(cam.k.width, cam.k.height);
+  std::vector<int> rows(static_cast<std::size_t>(cam.k.width));
+  ASSERT_TRUE(classes.classify(view, ColourTable::from_thresholds(t), horizon_rows(cam.k, pose, 2, rows), 1));
+  RobotDetector d(RobotParams{});
+  RobotList out;
+  d.detect(classes, view, cam.k, pose, 4, nullptr, 0, {}, out);
+  ASSERT_EQ(d.candidates().size(), kMaxRobotCandidates);
+  for (const int row : near_rows) {
+    bool kept = false;
+    for (const RobotCandidate& c : d.candidates()) kept = kept || std::abs(c.foot_row - row) <= 2;
+    EXPECT_TRUE(kept) << "the candidate standing at row " << row << " was dropped";
+  }
+  EXPECT_GE(d.candidates()[0].foot_row, near_rows.back() - 2) << "nearest first";
+}
+
 TEST(Robots, AShadedStripeAcrossTheBodyIsBridged) {
   // Grey parts in shade pass for carpet: a field stripe 0.05 heights tall across the body, the legs
   // going on 0.3 heights below it. Not bridged, the run above it (0.65 heights) would stand there.

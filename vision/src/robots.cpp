@@ -50,7 +50,8 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
       cands_[count_++] = c;
       return;
     }
-    auto farthest = std::min_element(cands_.begin(), cands_.end(), nearer);
+    // With "nearer" as the order's "less", the greatest element is the farthest.
+    auto farthest = std::max_element(cands_.begin(), cands_.end(), nearer);
     if (nearer(c, *farthest)) *farthest = c;
   };
   // Ends a candidate: kept when it is about a robot wide at its foot.
