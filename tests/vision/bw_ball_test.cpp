@@ -136,18 +136,30 @@ struct ColumnScene {
 Column detect_column(const ColumnScene& scene_spec);
 Column detect_column(double half_width) { return detect_column(ColumnScene{half_width, 0.0, 0.0, 0.0, {}}); }
 
-Column detect_column(const ColumnScene& scene_spec) {
-  const double half_width = scene_spec.half_width;
-  Camera cam;
+// Classifies a Gray8 picture (grey 100 is field, 200 and brighter line: Gray8 classifies with
+// U = V = 128) and runs the robot detector on it (columns every 4 px, no classifier).
+bool detect_on_grey(const Camera& cam, std::vector<std::uint8_t>& img, RobotDetector& d, RobotList& out) {
   const hal::CameraPose pose = cam.pose();
-  testing::Scene scene;  // bare field
-  auto frame = testing::render(scene, cam, hal::PixelFormat::kGray8);
-  // Gray8 classifies with U = V = 128: make the field a thresholds table where grey 100 is field.
   ColourThresholds t;
   t.field = {50, 150, 100, 156, 100, 156};
   t.line = {200, 255, 100, 156, 100, 156};
   t.ball = {0, 0, 0, 0, 0, 0};
-  const ColourTable table = ColourTable::from_thresholds(t);
+  auto frame = testing::render(testing::Scene{}, cam, hal::PixelFormat::kGray8);
+  hal::FrameView view = frame.view;
+  view.data = img.data();
+  view.stride = cam.k.width;
+  view.format = hal::PixelFormat::kGray8;
+  ClassImage classes(cam.k.width, cam.k.height);
+  std::vector<int> rows(static_cast<std::size_t>(cam.k.width));
+  if (!classes.classify(view, ColourTable::from_thresholds(t), horizon_rows(cam.k, pose, 2, rows), 1)) return false;
+  d.detect(classes, view, cam.k, pose, 4, nullptr, 0, {}, out);
+  return true;
+}
+
+Column detect_column(const ColumnScene& scene_spec) {
+  const double half_width = scene_spec.half_width;
+  Camera cam;
+  const hal::CameraPose pose = cam.pose();
   std::vector<std::uint8_t> img(static_cast<std::size_t>(cam.k.width * cam.k.height), 100);
   Column c;
   RobotDetector d(RobotParams{});
@@ -188,14 +200,7 @@ Column detect_column(const ColumnScene& scene_spec) {
     paint(static_cast<int>(foot->u - 0.1 * h), static_cast<int>(foot->u + 0.1 * h), top,
           top + static_cast<int>(0.2 * h), 230);
   }
-  hal::FrameView view = frame.view;
-  view.data = img.data();
-  view.stride = cam.k.width;
-  view.format = hal::PixelFormat::kGray8;
-  ClassImage classes(cam.k.width, cam.k.height);
-  std::vector<int> rows(static_cast<std::size_t>(cam.k.width));
-  EXPECT_TRUE(classes.classify(view, table, horizon_rows(cam.k, pose, 2, rows), 1));
-  d.detect(classes, view, cam.k, pose, 4, nullptr, 0, {}, c.out);
+  EXPECT_TRUE(detect_on_grey(cam, img, d, c.out));
   return c;
 }
 
@@ -275,10 +280,6 @@ TEST(Robots, WhenTheListIsFullTheFarthestGiveWay) {
   int far_row = 0;
   while (far_row < cam.k.height && height_at_row(far_row) < 40.0) ++far_row;
   ASSERT_LT(far_row + 60, cam.k.height);
-  ColourThresholds t;
-  t.field = {50, 150, 100, 156, 100, 156};
-  t.line = {200, 255, 100, 156, 100, 156};
-  t.ball = {0, 0, 0, 0, 0, 0};
   std::vector<std::uint8_t> img(static_cast<std::size_t>(cam.k.width * cam.k.height), 100);
   std::vector<int> near_rows;
   // Far ones 8 px wide every 24 px; nearer ones (4 rows lower each) 16 px wide every 40 px: wide
@@ -293,17 +294,9 @@ TEST(Robots, WhenTheListIsFullTheFarthestGiveWay) {
       for (int x = left; x < left + (near ? 16 : 8); ++x) img[static_cast<std::size_t>(y * cam.k.width + x)] = 230;
     }
   }
-  auto frame = testing::render(testing::Scene{}, cam, hal::PixelFormat::kGray8);
-  hal::FrameView view = frame.view;
-  view.data = img.data();
-  view.stride = cam.k.width;
-  view.format = hal::PixelFormat::kGray8;
-  ClassImage classes(cam.k.width, cam.k.height);
-  std::vector<int> rows(static_cast<std::size_t>(cam.k.width));
-  ASSERT_TRUE(classes.classify(view, ColourTable::from_thresholds(t), horizon_rows(cam.k, pose, 2, rows), 1));
   RobotDetector d(RobotParams{});
   RobotList out;
-  d.detect(classes, view, cam.k, pose, 4, nullptr, 0, {}, out);
+  ASSERT_TRUE(detect_on_grey(cam, img, d, out));
   ASSERT_EQ(d.candidates().size(), kMaxRobotCandidates);
   for (const int row : near_rows) {
     bool kept = false;

@@ -82,33 +82,41 @@ int LineCheck::judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, 
   return looks_like_line(c->u, c->v, -dy, dx, std::max(h, 0.5)) ? 1 : 0;
 }
 
-double LineCheck::share(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
-  if (std::hypot(b.x - a.x, b.y - a.y) < 1e-9) return 1.0;
+LineCheck::Verdict LineCheck::assess(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
+  if (std::hypot(b.x - a.x, b.y - a.y) < 1e-9) return {};
   const int n = std::max(params_.samples, 1);
   int judged = 0;
   int passed = 0;
+  // The painted span: from each end inwards, samples that are judged and fail are cut; one that
+  // passes, or one outside the picture (not judged: nothing to say), stops the cut.
+  int first = -1;  // first and last sample that does not fail
+  int last = -1;
   for (int i = 0; i < n; ++i) {
     const int r = judge(a, b, i, n);
     judged += r >= 0 ? 1 : 0;
     passed += r > 0 ? 1 : 0;
+    if (r != 0) {
+      if (first < 0) first = i;
+      last = i;
+    }
   }
-  if (judged < params_.min_judged) return 1.0;
-  return static_cast<double>(passed) / static_cast<double>(judged);
+  Verdict v;
+  v.share = judged < params_.min_judged ? 1.0 : static_cast<double>(passed) / static_cast<double>(judged);
+  v.accepted = v.share >= params_.min_share;
+  // The cut goes to the middle between the last failing and the first passing sample; nothing but
+  // failing samples: nothing to cut back to, the piece is left as it is.
+  if (first >= 0) {
+    const double dn = static_cast<double>(n);
+    v.span = {first == 0 ? 0.0 : static_cast<double>(first) / dn,
+              last == n - 1 ? 1.0 : static_cast<double>(last + 1) / dn};
+  }
+  return v;
 }
 
+double LineCheck::share(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept { return assess(a, b).share; }
+
 LineCheck::Span LineCheck::painted_span(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
-  if (!params_.enabled || std::hypot(b.x - a.x, b.y - a.y) < 1e-9) return {};
-  const int n = std::max(params_.samples, 1);
-  // From each end inwards: samples that are judged and fail are cut; one that passes, or one
-  // outside the picture (not judged: nothing to say), stops the cut.
-  int first = 0;
-  while (first < n && judge(a, b, first, n) == 0) ++first;
-  if (first == n) return {};
-  int last = n - 1;
-  while (last > first && judge(a, b, last, n) == 0) --last;
-  // The cut goes to the middle between the last failing and the first passing sample.
-  const double dn = static_cast<double>(n);
-  return {first == 0 ? 0.0 : static_cast<double>(first) / dn, last == n - 1 ? 1.0 : static_cast<double>(last + 1) / dn};
+  return judge_piece(a, b).span;
 }
 
 }  // namespace ringlet::vision

@@ -12,11 +12,10 @@
 namespace ringlet::vision {
 namespace {
 
-// Cuts a reported segment's ends back to where the picture shows paint (LineCheck::painted_span),
+// Cuts a reported segment's ends back to where the picture shows paint (LineCheck's painted span),
 // keeping its line; the image ends follow.
 void trim_to_paint(FieldLine& f, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
-                   const LineCheck& check) noexcept {
-  const LineCheck::Span span = check.painted_span(f.ground_start, f.ground_end);
+                   const LineCheck::Span& span) noexcept {
   if (span.from <= 0.0 && span.to >= 1.0) return;
   const hal::RobotPoint a = f.ground_start, b = f.ground_end;
   const auto at = [&](double t) { return hal::RobotPoint{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; };
@@ -303,7 +302,8 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
     }
     // The picture must show paint along it (a fit through a few true points and robots' feet
     // would not).
-    if (check != nullptr && !check->accepts(g0, g1)) {
+    const LineCheck::Verdict verdict = check != nullptr ? check->judge_piece(g0, g1) : LineCheck::Verdict{};
+    if (!verdict.accepted) {
       ++out.stats.check_rejected;
       return;
     }
@@ -315,7 +315,7 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
     f.inliers = count;
     f.image_start = i0;
     f.image_end = i1;
-    if (check != nullptr) trim_to_paint(f, k, pose, *check);
+    trim_to_paint(f, k, pose, verdict.span);
   };
   std::size_t first = 0;
   for (std::size_t i = 1; i <= s.order_.size(); ++i) {
@@ -366,12 +366,14 @@ void RansacLineFinder::merge(LineSet& out, const hal::CameraIntrinsics& k, const
         m.ground_end = base.at(t_max);
         // Two pieces in line across a robot's feet are not one painted line: the whole must look
         // like paint too (a line behind the ball still does).
-        if (check != nullptr && !check->accepts(m.ground_start, m.ground_end)) continue;
+        const LineCheck::Verdict verdict =
+            check != nullptr ? check->judge_piece(m.ground_start, m.ground_end) : LineCheck::Verdict{};
+        if (!verdict.accepted) continue;
         m.length_m = t_max - t_min;
         m.inliers = fa.inliers + fb.inliers;
         if (const auto p0 = hal::project(k, pose, {m.ground_start.x, m.ground_start.y, 0.0})) m.image_start = *p0;
         if (const auto p1 = hal::project(k, pose, {m.ground_end.x, m.ground_end.y, 0.0})) m.image_end = *p1;
-        if (check != nullptr) trim_to_paint(m, k, pose, *check);
+        trim_to_paint(m, k, pose, verdict.span);
         out.lines[a] = m;
         for (std::size_t c = b + 1; c < out.count; ++c) out.lines[c - 1] = out.lines[c];
         --out.count;

@@ -72,15 +72,14 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
   bool has_shadow = false;
   int join = 0;  // columns at most this far from the open candidate's right edge may still join it
   int last_foot = 0;  // the foot row of the open candidate's last column
-  const auto join_for = [&](int foot_row, int x) {
-    const double eh = height_at(x + 0.5 * s, foot_row, nullptr);
+  const auto join_for = [&](double eh) {  // eh: the expected height at the candidate's foot
     return std::max(2 * col_stride, static_cast<int>(params_.join_share * eh * params_.width_m / params_.height_m));
   };
-  const auto start = [&](int x, int foot) {
+  const auto start = [&](int x, int foot, double eh) {
     open = {x, x, foot, 1, 0.0};
     has_open = true;
     last_foot = foot;
-    join = join_for(foot, x);
+    join = join_for(eh);
   };
   const auto close = [&]() {  // the open candidate ends; its shadow, if any, takes its place
     if (!has_open) return;
@@ -91,7 +90,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
       open = shadow;
       has_open = true;
       last_foot = shadow.foot_row;
-      join = join_for(shadow.foot_row, shadow.x_max);
+      join = join_for(height_at(shadow.x_max + 0.5 * s, shadow.foot_row, nullptr));
     }
   };
 
@@ -170,7 +169,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     }
     if (has_shadow) finish(shadow);
     has_shadow = false;
-    start(x, best_foot);
+    start(x, best_foot, eh);
   }
   while (has_open) close();
   out.candidates = static_cast<int>(count_);

@@ -40,7 +40,7 @@ class LineCheck {
   /// (1 when fewer than min_judged samples fall inside the picture).
   [[nodiscard]] double share(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept;
   [[nodiscard]] bool accepts(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
-    return !params_.enabled || share(a, b) >= params_.min_share;
+    return judge_piece(a, b).accepted;
   }
 
   /// The part of [a, b] between its first and last samples that look like paint, as fractions of
@@ -50,9 +50,21 @@ class LineCheck {
     double from = 0.0;
     double to = 1.0;
   };
+  /// What the reporting needs of a piece, from one pass over its samples: accepts() and the
+  /// painted span (when disabled: accepted, nothing to cut).
+  struct Verdict {
+    bool accepted = true;
+    double share = 1.0;
+    Span span{};
+  };
+  [[nodiscard]] Verdict judge_piece(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
+    return params_.enabled ? assess(a, b) : Verdict{};
+  }
   [[nodiscard]] Span painted_span(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept;
 
  private:
+  // Share and painted span in one pass, whether or not the check is enabled.
+  [[nodiscard]] Verdict assess(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept;
   // Sample i of n along [a, b]: 1 looks like paint, 0 does not, -1 not judged (outside the picture).
   [[nodiscard]] int judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, int n) const noexcept;
   // The class at (x, y) rounded to the sampled grid; kOther outside the classified area.
