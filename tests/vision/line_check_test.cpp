@@ -90,6 +90,47 @@ TEST(LineCheck, APieceRunningPastThePaintIsCutBackToIt) {
   EXPECT_DOUBLE_EQ(all.to, 1.0);
 }
 
+// A line across the view at distance x, painted in dashes `on` long with gaps `off` between them
+// (a far line as a renderer aliases it, or as a camera's faint paint flickers between classes).
+testing::Scene dashed_line(double x, double on, double off) {
+  testing::Scene scene;
+  for (double y = -1.5; y < 1.5; y += on + off) scene.lines.push_back({{x, y}, {x, y + on}});
+  return scene;
+}
+
+// Half the painted width in the picture at `at` of a line across the view (along y).
+double half_width_at(hal::RobotPoint at) {
+  const Camera cam;
+  const ClassImage classes(640, 480);
+  const hal::CameraPose pose = cam.pose();
+  return LineCheck(classes, cam.k, pose, {}).half_width_px(at, 0.0, 1.0);
+}
+
+TEST(LineCheck, AThinFarLineInDashesPassesOverAShortStretch) {
+  // 4 m ahead the paint is about two pixels wide; 5 cm dashes with 5 cm gaps.
+  const hal::RobotPoint a{4.0, -0.6}, b{4.0, 0.6};
+  ASSERT_LT(half_width_at(a), LineCheckParams{}.thin_half_width_px) << "the scene must show a thin band";
+  const testing::Scene scene = dashed_line(4.0, 0.05, 0.05);
+  LineCheckParams point_only;
+  point_only.thin_reach_px = 0;  // judged at the sample's pixel alone
+  const double alone = share(scene, a, b, 1, point_only);
+  const double stretch = share(scene, a, b);
+  EXPECT_LT(alone, 0.75) << "samples in the gaps fail on their own pixel";
+  EXPECT_GE(stretch, 0.95) << "a dash within the stretch carries the sample";
+  // Plain green at that distance still fails: the stretch looks along the line, not across it.
+  EXPECT_DOUBLE_EQ(share(scene, {4.4, -0.6}, {4.4, 0.6}), 0.0);
+}
+
+TEST(LineCheck, AWideNearLineIsJudgedAtItsSamplesOnly) {
+  // 1.5 m ahead the paint is wide: its gaps are real gaps (an occluder, the line's end).
+  const hal::RobotPoint a{1.5, -0.6}, b{1.5, 0.6};
+  ASSERT_GE(half_width_at(a), LineCheckParams{}.thin_half_width_px);
+  const testing::Scene scene = dashed_line(1.5, 0.05, 0.05);
+  LineCheckParams point_only;
+  point_only.thin_reach_px = 0;
+  EXPECT_DOUBLE_EQ(share(scene, a, b), share(scene, a, b, 1, point_only));
+}
+
 TEST(LineCheck, OffOrOutOfThePictureIsNotJudged) {
   LineCheckParams off;
   off.enabled = false;

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "ringlet/vision/centre_circle.hpp"
+#include "ringlet/vision/class_image.hpp"
+#include "ringlet/vision/line_check.hpp"
 #include "ringlet/vision/prng.hpp"
 #include "ringlet/vision/ransac.hpp"
 
@@ -194,6 +196,41 @@ TEST(Ransac, SparseSupportForItsImageLengthIsNoLine) {
   std::vector<CandidatePoint> dense;
   add_line(dense, {1.0, -2.0}, {1.0, 2.0}, 400, rng, 0.0);
   EXPECT_EQ(run(dense, p).count, 1U);
+}
+
+// Points along the ground segment [a, b] for a support of `support` candidates per scan line its
+// image crosses (3 px apart), run with a LineCheck that judges nothing (disabled) but knows the
+// paint's width in the picture.
+LineSet run_with_support(hal::RobotPoint a, hal::RobotPoint b, double support) {
+  const auto ia = hal::project(kK, kPose, {a.x, a.y, 0.0});
+  const auto ib = hal::project(kK, kPose, {b.x, b.y, 0.0});
+  EXPECT_TRUE(ia && ib);
+  const double image_length = std::hypot(ib->u - ia->u, ib->v - ia->v);
+  SplitMix64 rng(4);
+  std::vector<CandidatePoint> pts;
+  add_line(pts, a, b, static_cast<int>(std::ceil(support * image_length / 3.0)), rng, 0.0);
+  const ClassImage classes(640, 480);
+  LineCheckParams judge_nothing;
+  judge_nothing.enabled = false;
+  const LineCheck check(classes, kK, kPose, judge_nothing);
+  RansacLineFinder finder({}, 4096);
+  LineSet out;
+  finder.find(pts, 1, kK, kPose, {}, out, -1, -1, -1, 3, nullptr, &check);
+  return out;
+}
+
+TEST(Ransac, ThinFarPaintNeedsLessSupport) {
+  // Between thin_min_support (0.3) and min_support (0.45): a line 4.5 m ahead, whose paint is
+  // under 4 px wide in the picture, is kept; the same support 1 m ahead, where the paint is wide
+  // and a scan line rarely misses it, is clutter lined up by chance.
+  const RansacParams defaults;
+  ASSERT_LT(defaults.thin_min_support, 0.38);
+  ASSERT_GT(defaults.min_support, 0.38);
+  const LineSet far = run_with_support({4.5, -1.0}, {4.5, 1.0}, 0.38);
+  EXPECT_EQ(far.count, 1U) << describe(far);
+  const LineSet near = run_with_support({1.0, -0.5}, {1.0, 0.5}, 0.38);
+  EXPECT_EQ(near.count, 0U) << describe(near);
+  EXPECT_GE(near.stats.sparse_rejected, 1);
 }
 
 TEST(Ransac, GapSplitsALine) {

@@ -56,20 +56,24 @@ bool LineCheck::looks_like_line(double cx, double cy, double nx, double ny, doub
   return true;
 }
 
+double LineCheck::half_width_px(const hal::RobotPoint& at, double dx, double dy) const noexcept {
+  const double w = params_.line_width_m / 2.0;
+  const auto c = hal::project(k_, pose_, {at.x, at.y, 0.0});
+  const auto e = hal::project(k_, pose_, {at.x - dy * w, at.y + dx * w, 0.0});
+  if (!c || !e) return 0.0;
+  const double ex = e->u - c->u, ey = e->v - c->v;
+  return std::sqrt(ex * ex + ey * ey);
+}
+
 int LineCheck::judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, int n) const noexcept {
   const double gx = b.x - a.x, gy = b.y - a.y;
   const double len = std::sqrt(gx * gx + gy * gy);
-  // Half the painted width across the line, on the ground.
-  const double wx = -gy / len * params_.line_width_m / 2.0;
-  const double wy = gx / len * params_.line_width_m / 2.0;
   const double t = (static_cast<double>(i) + 0.5) / static_cast<double>(n);
   const double px = a.x + t * gx, py = a.y + t * gy;
   const auto c = hal::project(k_, pose_, {px, py, 0.0});
-  const auto e = hal::project(k_, pose_, {px + wx, py + wy, 0.0});
-  if (!c || !e) return -1;
+  const double h = half_width_px({px, py}, gx / len, gy / len);
+  if (!c || h <= 0.0) return -1;
   if (c->u < 0.0 || c->u >= classes_.width() || c->v < classes_.first_row() || c->v >= classes_.height()) return -1;
-  const double ex = e->u - c->u, ey = e->v - c->v;
-  const double h = std::sqrt(ex * ex + ey * ey);
   // The normal in the picture: across the projected line, i.e. perpendicular to its image
   // direction (the projected width vector is not perpendicular in a perspective view).
   const auto c2 = hal::project(k_, pose_, {px + gx / len * 0.05, py + gy / len * 0.05, 0.0});
@@ -79,7 +83,15 @@ int LineCheck::judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, 
   if (dl < 1e-9) return -1;
   dx /= dl;
   dy /= dl;
-  return looks_like_line(c->u, c->v, -dy, dx, std::max(h, 0.5)) ? 1 : 0;
+  const double half = std::max(h, 0.5);
+  if (looks_like_line(c->u, c->v, -dy, dx, half)) return 1;
+  if (h >= params_.thin_half_width_px) return 0;
+  for (int d = 1; d <= params_.thin_reach_px; ++d) {
+    for (const int sign : {1, -1}) {
+      if (looks_like_line(c->u + sign * d * dx, c->v + sign * d * dy, -dy, dx, half)) return 1;
+    }
+  }
+  return 0;
 }
 
 LineCheck::Verdict LineCheck::assess(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {

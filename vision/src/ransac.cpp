@@ -269,6 +269,12 @@ bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece,
   return true;
 }
 
+double RansacLineFinder::min_support(const Line2& line, double t0, double t1, const LineCheck* check) const noexcept {
+  if (check == nullptr) return params_.min_support;
+  const double width = 2.0 * check->half_width_px(line.at((t0 + t1) / 2.0), line.dx, line.dy);
+  return width > 0.0 && width < params_.thin_width_px ? params_.thin_min_support : params_.min_support;
+}
+
 bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
                                   int scan_stride, const LineCheck* check, LineSet& out) noexcept {
   auto& s = scratch_;
@@ -296,7 +302,7 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
     const auto p1 = hal::project(k, pose, {g1.x, g1.y, 0.0});
     const hal::Pixel i0 = p0 ? *p0 : s.pixels_[static_cast<std::size_t>(s.order_[first].second)];
     const hal::Pixel i1 = p1 ? *p1 : s.pixels_[static_cast<std::size_t>(s.order_[last].second)];
-    if (count < params_.min_support * norm(i1.u - i0.u, i1.v - i0.v) / scan_stride) {
+    if (count < min_support(line, t0, t1, check) * norm(i1.u - i0.u, i1.v - i0.v) / scan_stride) {
       ++out.stats.sparse_rejected;
       return;
     }

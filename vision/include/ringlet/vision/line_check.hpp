@@ -28,6 +28,12 @@ struct LineCheckParams {
   double band_factor = 2.5;       // the band may look this many times its expected width (blur) ...
   double band_slack_px = 3.0;     // ... plus this
   int edge_px = 2;                // pixels of neither line nor field allowed between band and field
+  // A band thinner than this (half width, px) is judged over a short stretch: a sample passes when
+  // the band looks like paint at it or up to thin_reach_px along the line either way. Far lines
+  // one or two pixels wide flicker between line and field classes (a camera's faint far paint) or
+  // break into dashes (a renderer's aliasing), so the one pixel under a sample says little there.
+  double thin_half_width_px = 1.5;
+  int thin_reach_px = 4;
 };
 
 class LineCheck {
@@ -60,6 +66,10 @@ class LineCheck {
   [[nodiscard]] Verdict judge_piece(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
     return params_.enabled ? assess(a, b) : Verdict{};
   }
+  /// Half the painted width in the picture at ground point `at` of a line with unit ground
+  /// direction (dx, dy): the distance between `at` and a point half a width across, projected.
+  /// 0 when either does not project.
+  [[nodiscard]] double half_width_px(const hal::RobotPoint& at, double dx, double dy) const noexcept;
   [[nodiscard]] Span painted_span(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept;
 
  private:

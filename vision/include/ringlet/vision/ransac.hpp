@@ -38,6 +38,9 @@ struct RansacParams {
   double min_support = 0.45;         // inliers per scan line the piece's image crosses (its image
                                      //   length / scan stride): a painted line yields a candidate
                                      //   on most of them; clutter lined up by chance, on few
+  double thin_width_px = 4.0;         // a piece whose paint is narrower than this in the picture
+  double thin_min_support = 0.3;     //   needs only this support: a far line's run is often missed
+                                     //   (too faint, or broken into dashes), yet lines up exactly
   double split_gap_m = 0.5;          // a gap longer than this between consecutive inliers splits
   double merge_angle_deg = 5.0;      // collinear merge: directions within this angle, and
   double merge_offset_m = 0.10;      //   each segment's endpoints this close to the other's line,
@@ -125,6 +128,9 @@ class RansacLineFinder {
   [[nodiscard]] double tolerance(const hal::RobotPoint& p) const noexcept;
   /// The arc test of one piece; true (and the circle updated) when it is part of the circle.
   bool try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept;
+  /// The support the piece [t0, t1] of `line` needs: thin_min_support where its paint is thin in
+  /// the picture at its middle (the check knows the paint's width; without one, min_support).
+  [[nodiscard]] double min_support(const Line2& line, double t0, double t1, const LineCheck* check) const noexcept;
   /// Emits the line's gap-free pieces (arcs go to the circle instead); true if any was emitted.
   bool add_pieces(const Line2& line, const hal::CameraIntrinsics& k, const hal::CameraPose& pose, int scan_stride,
                   const LineCheck* check, LineSet& out) noexcept;
