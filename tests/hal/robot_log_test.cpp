@@ -196,7 +196,7 @@ TEST(RobotLog, DamagedLogsAreRefusedNamingWhatAndWhere) {
       {"camera stride", [](auto& b) { put_u32(b, kCameraRecord + kRecordHeaderBytes + 33, 100); },
        "camera frame stride 100 is less than a row (1280 bytes) at byte"},
       {"data after end", [](auto& b) { b.push_back(1); }, "data after the end record at byte"},
-      {"truncated", [](auto& b) { b.resize(b.size() - 3); }, "truncated end record (16 bytes announced, 13 left) at byte"},
+      {"truncated", [](auto& b) { b.erase(b.end() - 3, b.end()); }, "truncated end record (16 bytes announced, 13 left) at byte"},
   };
   std::vector<std::uint8_t> pixels;
   for (const Damage& c : cases) {

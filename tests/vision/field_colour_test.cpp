@@ -341,6 +341,39 @@ TEST(FieldColour, PaleFieldChromaIsFieldOnlyInShade) {
   }
 }
 
+// An estimate of uniform field luminance `y` and luminance spread `spread` over every cell.
+AdaptiveClassifier classifier_for(int y, int spread) {
+  FieldColourEstimate e;
+  e.valid = true;
+  e.source = ColourSource::kFrame;
+  e.y = static_cast<std::uint8_t>(y);
+  e.u = 108;
+  e.v = 118;
+  e.y_spread = static_cast<std::uint8_t>(spread);
+  e.uv_spread = 2;
+  e.cell_y.fill(static_cast<std::uint8_t>(y));
+  e.field_cells = ~std::uint64_t{0};
+  AdaptiveClassifier adaptive;
+  adaptive.build(e, 640, 480);
+  return adaptive;
+}
+
+TEST(FieldColour, BrightCarpetLeavesThePaintRoomBelowWhite) {
+  const int cell = 20;
+  // Ordinary carpet: the margin, max(28, 3·spread, 0.25·Y), stands (100 + 28).
+  EXPECT_EQ(classifier_for(100, 4).line_y_min(cell), 128);
+  // Overexposed carpet at Y 200: 0.25·Y would ask for 250, so paint clipped at 240 could never
+  // pass; at most half the way to white is asked (200 + 28).
+  const AdaptiveClassifier bright = classifier_for(200, 4);
+  EXPECT_EQ(bright.line_y_min(cell), 228);
+  EXPECT_EQ(bright.classify(240, 128, 128, cell), ColourClass::kLine);
+  EXPECT_EQ(bright.classify(220, 128, 128, cell), ColourClass::kOther) << "grey just above the carpet is no paint";
+  // Sun and shade across the view: a spread of 30 would ask for 113 + 90; half the headroom is 71.
+  EXPECT_EQ(classifier_for(113, 30).line_y_min(cell), 113 + 71);
+  // The floor stays line_margin even right under white.
+  EXPECT_EQ(classifier_for(240, 2).line_y_min(cell), 268) << "above 255: no line in that cell";
+}
+
 TEST(FieldColour, TableModeNeverEstimates) {
   Camera cam;
   VisionConfig config;

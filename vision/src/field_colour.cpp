@@ -262,7 +262,11 @@ void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int heig
                                  static_cast<int>(std::lround(p.line_margin_ratio * fy))});
     // Lines only where there is field (a grey floor or wall beyond the carpet is bright and
     // unsaturated too); may exceed 255: no line in that cell.
-    const int line_y = ((e.field_cells >> c) & 1U) != 0 ? fy + margin : 256;
+    // The margin never asks more than line_headroom of the way from the field to white (but at
+    // least line_margin): on bright or sunlit carpet 0.25·Y or 3·spread would leave the paint,
+    // clipped at 255, no room to pass.
+    const int headroom = std::max(p.line_margin, static_cast<int>(std::lround(p.line_headroom * (255 - fy))));
+    const int line_y = ((e.field_cells >> c) & 1U) != 0 ? fy + std::min(margin, headroom) : 256;
     const int field_lo = fy - std::max(p.field_y_below, static_cast<int>(std::lround(p.field_y_k * spread_y)));
     line_y_[static_cast<std::size_t>(c)] = line_y;
     field_lo_[static_cast<std::size_t>(c)] = field_lo;

@@ -76,6 +76,8 @@ struct AdaptiveColourParams {
   int line_margin = 28;               // line: Y ≥ local field Y + max(line_margin, k·spread, ratio·Y)
   double line_margin_k = 3.0;
   double line_margin_ratio = 0.25;
+  double line_headroom = 0.5;         // ... but at most this share of (255 − local field Y), and at
+                                      // least line_margin: bright carpet leaves clipped paint little room
   int line_max_chroma = 36;           // line: |U − 128| and |V − 128| within this (unsaturated; real
                                       // bluish-white lines have U down to 95)
   YuvRange ball{40, 235, 0, 118, 158, 255};  // the orange ball option: an absolute box (ColourThresholds)
