@@ -24,6 +24,16 @@ double RobotDetector::expected_height_px(const hal::CameraIntrinsics& k, const h
   return std::max(0.0, foot->v - head->v);
 }
 
+RobotBox robot_box(const RobotCandidate& c, int step, const RobotParams& params) noexcept {
+  RobotBox b;
+  b.foot = {0.5 * (c.x_min + c.x_max + step), static_cast<double>(c.foot_row)};
+  b.height = c.height_px;
+  b.width = c.height_px * params.width_m / params.height_m;
+  b.left = b.foot.u - 0.5 * b.width;
+  b.top = c.foot_row - c.height_px;
+  return b;
+}
+
 void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
                            const hal::CameraPose& pose, int stride, HogClassifier* classifier, int max_verified,
                            const Deadline& deadline, RobotList& out) noexcept {
@@ -34,11 +44,9 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
   const int col_stride = std::max(s, (std::max(stride, 1) + s - 1) / s * s);
   const int first = classes.first_row();
   const int h = classes.height();
-  const auto height_at = [&](double u, double v, hal::RobotPoint* g) {
+  const auto height_at = [&](double u, double v) {
     const auto p = hal::pixel_to_ground(k, pose, {u, v});
-    if (!p) return 0.0;
-    if (g != nullptr) *g = *p;
-    return expected_height_px(k, pose, *p);
+    return p ? expected_height_px(k, pose, *p) : 0.0;
   };
 
   // A candidate goes into the fixed list; when it is full, the farthest gives way.
@@ -57,7 +65,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
   // Ends a candidate: kept when it is about a robot wide at its foot.
   const auto finish = [&](Candidate c) {
     const double u = 0.5 * (c.x_min + c.x_max + s);
-    const double eh = height_at(u, c.foot_row, nullptr);
+    const double eh = height_at(u, c.foot_row);
     const double width = c.x_max - c.x_min + s;
     const double expected_width = eh * params_.width_m / params_.height_m;
     if (eh <= 0.0 || width < params_.min_width_share * expected_width || width > params_.max_width_share * expected_width) return;
@@ -90,7 +98,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
       open = shadow;
       has_open = true;
       last_foot = shadow.foot_row;
-      join = join_for(height_at(shadow.x_max + 0.5 * s, shadow.foot_row, nullptr));
+      join = join_for(height_at(shadow.x_max + 0.5 * s, shadow.foot_row));
     }
   };
 
@@ -118,7 +126,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
       if (run_start < 0) continue;
       if (field_since < 0) {
         field_since = y;
-        run_eh = height_at(x + 0.5 * s, field_since, nullptr);  // the run's foot row
+        run_eh = height_at(x + 0.5 * s, field_since);  // the run's foot row
       }
       if (y < h && y - field_since < std::max(2 * s, static_cast<int>(params_.max_gap_share * run_eh))) continue;
       // What followed the last bridged gap must be longer than twice the gap to belong to the
@@ -126,7 +134,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
       int foot = field_since;
       if (gap_at >= 0 && field_since - gap_end < 2 * (gap_end - gap_at)) {
         foot = gap_at;
-        run_eh = height_at(x + 0.5 * s, foot, nullptr);
+        run_eh = height_at(x + 0.5 * s, foot);
       }
       if (foot < h && run_eh >= params_.min_height_px &&
           (foot - run_start >= params_.min_height_share * run_eh || run_start == first)) {
@@ -140,7 +148,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     // The open candidate (and a shadow promoted in its place) out of reach ends.
     while (has_open && x - open.x_max > join) close();
     if (best_foot < 0) continue;
-    const double eh = height_at(x + 0.5 * s, best_foot, nullptr);
+    const double eh = height_at(x + 0.5 * s, best_foot);
     const int tolerance = std::max(2 * s, static_cast<int>(params_.foot_tolerance_share * eh));
     if (has_open && std::abs(best_foot - last_foot) <= tolerance) {
       open.x_max = x;
@@ -187,19 +195,21 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
   for (std::size_t i = 0; i < n && out.count < kMaxRobots; ++i) {
     const Candidate& c = cands_[i];
     RobotDetection r;
-    const double u = 0.5 * (c.x_min + c.x_max + s);
-    const double eh = height_at(u, c.foot_row, &r.ground);
-    if (eh <= 0.0) continue;
+    const RobotBox box = robot_box(c, s, params_);
+    const auto ground = hal::pixel_to_ground(k, pose, box.foot);  // finish() kept only feet on the ground
+    if (!ground) continue;
+    r.ground = *ground;
+    const double eh = box.height;
     const double near = std::hypot(r.ground.x, r.ground.y);
     if (near > 0.0) {
       const double k_far = 1.0 + params_.foot_depth_m / near;
       r.ground = {r.ground.x * k_far, r.ground.y * k_far};
     }
-    r.foot = {u, static_cast<double>(c.foot_row)};
-    r.height = eh;
-    r.width = eh * params_.width_m / params_.height_m;
-    r.left = u - 0.5 * r.width;
-    r.top = c.foot_row - eh;
+    r.foot = box.foot;
+    r.height = box.height;
+    r.width = box.width;
+    r.left = box.left;
+    r.top = box.top;
     r.distance_m = std::hypot(r.ground.x, r.ground.y);
     r.bearing_rad = std::atan2(r.ground.y, r.ground.x);
     if (use_classifier) {

@@ -269,13 +269,9 @@ EvalReport run_evaluation(const EvalOptions& o) {
                                     o.robot_match);
       std::vector<FoundRobot> robot_proposals;
       if (result.robots.candidates > 0) {
-        const double s = pipeline->robot_candidate_step();
-        const double aspect = o.vision.robot.width_m / o.vision.robot.height_m;
         for (const RobotCandidate& c : pipeline->robot_candidates()) {
-          const double u = 0.5 * (c.x_min + c.x_max + s);
-          const double w = aspect * c.height_px;
-          robot_proposals.push_back({u - 0.5 * w, c.foot_row - c.height_px, w, c.height_px, u,
-                                     static_cast<double>(c.foot_row), 0.0});
+          const RobotBox b = robot_box(c, pipeline->robot_candidate_step(), o.vision.robot);
+          robot_proposals.push_back({b.left, b.top, b.width, b.height, b.foot.u, b.foot.v, 0.0});
         }
       }
       report.robot_proposals += score_robots(robot_proposals, f.meta.robots, f.meta.intrinsics.width,

@@ -83,6 +83,15 @@ struct RobotCandidate {
   double height_px = 0.0;    // a standing NAO's image height at the foot point
 };
 
+/// The image box of a standing NAO on candidate `c` (foot at the bottom centre of its columns;
+/// `step`: the class grid's column step), as the detector reports it and the evaluation scores
+/// its proposals.
+struct RobotBox {
+  double left = 0.0, top = 0.0, width = 0.0, height = 0.0;
+  hal::Pixel foot{};
+};
+[[nodiscard]] RobotBox robot_box(const RobotCandidate& c, int step, const RobotParams& params) noexcept;
+
 struct RobotList {
   std::array<RobotDetection, kMaxRobots> robots{};
   std::size_t count = 0;
