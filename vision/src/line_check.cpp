@@ -57,11 +57,15 @@ bool LineCheck::looks_like_line(double cx, double cy, double nx, double ny, doub
 }
 
 double LineCheck::half_width_px(const hal::RobotPoint& at, double dx, double dy) const noexcept {
-  const double w = params_.line_width_m / 2.0;
   const auto c = hal::project(k_, pose_, {at.x, at.y, 0.0});
+  return c ? half_width_from(*c, at, dx, dy) : 0.0;
+}
+
+double LineCheck::half_width_from(const hal::Pixel& c, const hal::RobotPoint& at, double dx, double dy) const noexcept {
+  const double w = params_.line_width_m / 2.0;
   const auto e = hal::project(k_, pose_, {at.x - dy * w, at.y + dx * w, 0.0});
-  if (!c || !e) return 0.0;
-  const double ex = e->u - c->u, ey = e->v - c->v;
+  if (!e) return 0.0;
+  const double ex = e->u - c.u, ey = e->v - c.v;
   return std::sqrt(ex * ex + ey * ey);
 }
 
@@ -71,8 +75,9 @@ int LineCheck::judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, 
   const double t = (static_cast<double>(i) + 0.5) / static_cast<double>(n);
   const double px = a.x + t * gx, py = a.y + t * gy;
   const auto c = hal::project(k_, pose_, {px, py, 0.0});
-  const double h = half_width_px({px, py}, gx / len, gy / len);
-  if (!c || h <= 0.0) return -1;
+  if (!c) return -1;
+  const double h = half_width_from(*c, {px, py}, gx / len, gy / len);
+  if (h <= 0.0) return -1;
   if (c->u < 0.0 || c->u >= classes_.width() || c->v < classes_.first_row() || c->v >= classes_.height()) return -1;
   // The normal in the picture: across the projected line, i.e. perpendicular to its image
   // direction (the projected width vector is not perpendicular in a perspective view).

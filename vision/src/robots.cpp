@@ -64,12 +64,13 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
   };
   // Ends a candidate: kept when it is about a robot wide at its foot.
   const auto finish = [&](Candidate c) {
-    const double u = 0.5 * (c.x_min + c.x_max + s);
-    const double eh = height_at(u, c.foot_row);
+    c.height_px = height_at(0.5 * (c.x_min + c.x_max + s), c.foot_row);
     const double width = c.x_max - c.x_min + s;
-    const double expected_width = eh * params_.width_m / params_.height_m;
-    if (eh <= 0.0 || width < params_.min_width_share * expected_width || width > params_.max_width_share * expected_width) return;
-    c.height_px = eh;
+    const double expected_width = robot_box(c, s, params_).width;
+    if (c.height_px <= 0.0 || width < params_.min_width_share * expected_width ||
+        width > params_.max_width_share * expected_width) {
+      return;
+    }
     push(c);
   };
   // The open candidate, and the columns beside it whose runs end higher up (a shadow): the field

@@ -73,6 +73,8 @@ class LineCheck {
   [[nodiscard]] Span painted_span(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept;
 
  private:
+  // half_width_px with `at` already projected to `c` (judge() has it).
+  [[nodiscard]] double half_width_from(const hal::Pixel& c, const hal::RobotPoint& at, double dx, double dy) const noexcept;
   // Share and painted span in one pass, whether or not the check is enabled.
   [[nodiscard]] Verdict assess(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept;
   // Sample i of n along [a, b]: 1 looks like paint, 0 does not, -1 not judged (outside the picture).
