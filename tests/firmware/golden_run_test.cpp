@@ -83,8 +83,8 @@ std::string spl_field_policies_acting(double seconds) {
 // Then thin far paint needed less support and was judged over a short stretch (line_check.hpp):
 // vision reports more far lines, so the SPL run hashes changed again (not the trajectories).
 constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0x2b3a1ae0c646d27aULL, 0xdbacd985f271b7ddULL};
-constexpr Golden kSplField{"spl_field.toml (4 s)", 0x5620a62c0b652a82ULL, 0x12609a90f2ee7c12ULL};
-constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x5620a62c0b652a82ULL, 0xc2267d2113e1b9d8ULL};
+constexpr Golden kSplField{"spl_field.toml (4 s)", 0x5620a62c0b652a82ULL, 0x3e88486a9f635375ULL};
+constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x5620a62c0b652a82ULL, 0x1f93341a9e318aa0ULL};
 
 // The hybrid controller (planner + arbiter under Navigate): the courtyard's whole mission, and the
 // first 30 s of P&B's test world (the dead end found and planned around) and of the woods.

@@ -233,6 +233,44 @@ TEST(Ransac, ThinFarPaintNeedsLessSupport) {
   EXPECT_GE(near.stats.sparse_rejected, 1);
 }
 
+TEST(Ransac, ATooSparsePieceIsJudgedInPartsAtItsWidestGap) {
+  // A line seen between robots' legs: 0.4 m of it densely seen, then two white soles on its line
+  // 0.45 m and 0.43 m further on. Each gap is under split_gap_m, so the round's piece spans all
+  // three and is far too sparse for its image length; split at its widest gap, the painted part
+  // passes alone (the soles, 2 cm long, are dropped).
+  const hal::RobotPoint a{1.0, -0.6};
+  const hal::RobotPoint b{1.0, -0.2};
+  const auto ia = hal::project(kK, kPose, {a.x, a.y, 0.0});
+  const auto ib = hal::project(kK, kPose, {b.x, b.y, 0.0});
+  ASSERT_TRUE(ia && ib);
+  SplitMix64 rng(6);
+  std::vector<CandidatePoint> pts;
+  add_line(pts, a, b, static_cast<int>(std::ceil(0.6 * std::hypot(ib->u - ia->u, ib->v - ia->v) / 3.0)), rng, 0.0);
+  add_line(pts, {1.0, 0.25}, {1.0, 0.27}, 8, rng, 0.0);
+  add_line(pts, {1.0, 0.70}, {1.0, 0.72}, 8, rng, 0.0);
+  const ClassImage classes(640, 480);
+  LineCheckParams judge_nothing;
+  judge_nothing.enabled = false;
+  const LineCheck check(classes, kK, kPose, judge_nothing);
+  const auto find = [&](int depth) {
+    RansacParams p;
+    p.max_split_depth = depth;
+    RansacLineFinder finder(p, 4096);
+    LineSet out;
+    finder.find(pts, 1, kK, kPose, {}, out, -1, -1, -1, 3, nullptr, &check);
+    return out;
+  };
+  const LineSet whole = find(0);
+  EXPECT_EQ(whole.count, 0U) << describe(whole);
+  EXPECT_GE(whole.stats.sparse_rejected, 1);
+  const LineSet parts = find(3);
+  ASSERT_EQ(parts.count, 1U) << describe(parts);
+  EXPECT_GE(parts.stats.splits, 1);
+  EXPECT_TRUE(matches(parts.lines[0], a, b, 0.01));
+  EXPECT_NEAR(std::min(parts.lines[0].ground_start.y, parts.lines[0].ground_end.y), -0.6, 0.03);
+  EXPECT_NEAR(std::max(parts.lines[0].ground_start.y, parts.lines[0].ground_end.y), -0.2, 0.03);
+}
+
 TEST(Ransac, GapSplitsALine) {
   SplitMix64 rng(5);
   std::vector<CandidatePoint> pts;

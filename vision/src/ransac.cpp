@@ -282,7 +282,8 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
   for (const int p : s.inliers_) s.order_.emplace_back(line.along(s.points_[static_cast<std::size_t>(p)]), p);
   std::sort(s.order_.begin(), s.order_.end());
   bool any = false;
-  const auto close_piece = [&](std::size_t first, std::size_t last) {  // [first, last]
+  // [first, last]; `depth`: how many times this piece's points were split off a larger piece.
+  const auto close_piece = [&](const auto& self, std::size_t first, std::size_t last, int depth) -> void {
     const auto count = static_cast<int>(last - first + 1);
     const double t0 = s.order_[first].first;
     const double t1 = s.order_[last].first;
@@ -302,15 +303,34 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
     const auto p1 = hal::project(k, pose, {g1.x, g1.y, 0.0});
     const hal::Pixel i0 = p0 ? *p0 : s.pixels_[static_cast<std::size_t>(s.order_[first].second)];
     const hal::Pixel i1 = p1 ? *p1 : s.pixels_[static_cast<std::size_t>(s.order_[last].second)];
+    // A piece that fails as a whole may still hold a line: one seen past robots' legs has long
+    // hidden stretches (too sparse), one that runs on into a robot's white feet is no paint there
+    // (the check). Its parts either side of the widest gap between its points are judged alone.
+    const auto split = [&]() {
+      if (depth >= params_.max_split_depth || count < 2 * params_.min_inliers) return false;
+      std::size_t cut = first;
+      double widest = -1.0;
+      for (std::size_t i = first; i < last; ++i) {
+        const double gap = s.order_[i + 1].first - s.order_[i].first;
+        if (gap > widest) {
+          widest = gap;
+          cut = i;
+        }
+      }
+      ++out.stats.splits;
+      self(self, first, cut, depth + 1);
+      self(self, cut + 1, last, depth + 1);
+      return true;
+    };
     if (count < min_support(line, t0, t1, check) * norm(i1.u - i0.u, i1.v - i0.v) / scan_stride) {
-      ++out.stats.sparse_rejected;
+      if (!split()) ++out.stats.sparse_rejected;
       return;
     }
     // The picture must show paint along it (a fit through a few true points and robots' feet
     // would not).
     const LineCheck::Verdict verdict = check != nullptr ? check->judge_piece(g0, g1) : LineCheck::Verdict{};
     if (!verdict.accepted) {
-      ++out.stats.check_rejected;
+      if (!split()) ++out.stats.check_rejected;
       return;
     }
     any = true;
@@ -326,7 +346,7 @@ bool RansacLineFinder::add_pieces(const Line2& line, const hal::CameraIntrinsics
   std::size_t first = 0;
   for (std::size_t i = 1; i <= s.order_.size(); ++i) {
     if (i == s.order_.size() || s.order_[i].first - s.order_[i - 1].first > params_.split_gap_m) {
-      if (!s.order_.empty()) close_piece(first, i - 1);
+      if (!s.order_.empty()) close_piece(close_piece, first, i - 1, 0);
       first = i;
     }
   }

@@ -42,6 +42,9 @@ struct RansacParams {
   double thin_min_support = 0.3;     //   needs only this support: a far line's run is often missed
                                      //   (too faint, or broken into dashes), yet lines up exactly
   double split_gap_m = 0.5;          // a gap longer than this between consecutive inliers splits
+  int max_split_depth = 3;           // a piece rejected as too sparse or as no paint is split at
+                                     //   its widest gap and its parts judged alone, this many times
+                                     //   deep (≤ 2^depth parts): lines past legs, into white feet
   double merge_angle_deg = 5.0;      // collinear merge: directions within this angle, and
   double merge_offset_m = 0.10;      //   each segment's endpoints this close to the other's line,
                                      //   and their gap along it below split_gap_m
@@ -76,6 +79,7 @@ struct RansacStats {
   int arcs_rejected = 0;         // pieces taken as (part of) the centre circle, not reported as lines
   int circle_points = 0;         // candidates left out of the line rounds: on the known circle
   int merges = 0;
+  int splits = 0;                // rejected pieces split at their widest gap and judged in parts
   int segments_dropped = 0;      // pieces beyond kMaxLines
   bool stopped_early = false;    // the deadline ended extraction: lines may be missing
   int points_left = 0;           // used points never examined because of that
