@@ -33,6 +33,8 @@ ringlet_layer(hal         FOLDER hal
   WHY "hal/ is the bottom: interfaces and real backends use no other layer")
 ringlet_layer(whiteboard  FOLDER whiteboard         USES hal
   WHY "the whiteboard sits below every algorithm layer and may use only hal/'s plain types")
+ringlet_layer(remote      FOLDER remote             USES hal whiteboard
+  WHY "the whiteboard over DDS: it reads and writes whiteboard messages and knows no algorithm, backend or firmware/")
 ringlet_layer(executive   FOLDER firmware/executive USES hal
   WHY "the cyclic executive schedules tasks on hal/ clocks and knows nothing of what they run")
 ringlet_layer(sim_hal     FOLDER sim_hal            USES hal
@@ -45,9 +47,9 @@ ringlet_layer(planning    FOLDER planning           USES hal whiteboard
   WHY "algorithm layers use hal/ and the whiteboard only: never a backend, another algorithm layer or firmware/")
 ringlet_layer(tools       FOLDER tools              USES hal whiteboard sim_hal vision
   WHY "desktop tools (the dataset writer) may use the simulator and vision, never firmware/")
-ringlet_layer(firmware    FOLDER firmware           USES hal whiteboard executive sim_hal vision behaviour planning
+ringlet_layer(firmware    FOLDER firmware           USES hal whiteboard remote executive sim_hal vision behaviour planning
   WHY "firmware/ composes every layer the robot runs; no desktop tool, no test code")
-ringlet_layer(tests       FOLDER tests              USES hal whiteboard executive sim_hal vision behaviour planning tools firmware
+ringlet_layer(tests       FOLDER tests              USES hal whiteboard remote executive sim_hal vision behaviour planning tools firmware
   WHY "tests may use every layer; nothing uses tests")
 
 # Folder -> layer, deepest folder first. Sets <out> to the layer holding <rel> (a path relative to

@@ -8,12 +8,11 @@
 # host program (stdlib-only Python 3), so this works unchanged in cross builds. It checks externals
 # and their fields against the whiteboard schema, so the outputs depend on schema.def too. The
 # target must link ringlet_llfsm and ringlet_whiteboard (the generated code uses both).
-find_package(Python3 REQUIRED COMPONENTS Interpreter)
-# Cached so that every directory sees them (find_package results are directory-scoped).
-set(RINGLET_PYTHON3 ${Python3_EXECUTABLE} CACHE INTERNAL "host Python 3 for the generators")
+# RINGLET_PYTHON3: the host's Python 3 (top-level CMakeLists.txt).
 set(RINGLET_LLFSMC ${CMAKE_CURRENT_LIST_DIR}/../llfsmc/llfsmc.py CACHE INTERNAL "LLFSM model compiler")
 # The compiler's modules (llfsmc.py is only the entry point): a change to any regenerates.
-file(GLOB _llfsmc_sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/../llfsmc/llfsmc/*.py)
+file(GLOB _llfsmc_sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/../llfsmc/llfsmc/*.py
+     ${CMAKE_CURRENT_LIST_DIR}/../../whiteboard/schema/*.py)
 set(RINGLET_LLFSMC_SOURCES ${RINGLET_LLFSMC} ${_llfsmc_sources} CACHE INTERNAL "LLFSM model compiler sources")
 get_filename_component(_wb_schema ${CMAKE_CURRENT_LIST_DIR}/../../whiteboard/include/ringlet/whiteboard/schema.def ABSOLUTE)
 set(RINGLET_WB_SCHEMA ${_wb_schema} CACHE INTERNAL "whiteboard schema the LLFSM models are checked against")

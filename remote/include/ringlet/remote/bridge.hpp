@@ -1,0 +1,110 @@
+#pragma once
+// The bridge: publishes the whiteboard on DDS from its own non-real-time thread.
+//
+// It reads each type by generation (Whiteboard::read, lock-free: the cycle never waits for it and
+// never sees it) and writes every generation it has not sent yet, converted by topics.hpp, with
+// the robot id and the generation in the sample. What it could not send is counted per type:
+//   missed        generations the whiteboard's ring overwrote before the bridge read them
+//   rate_skipped  generations left out on purpose by the type's rate limit (the newest is sent)
+//   failed        dds_write errors
+// Everything DDS needs (participant, topics, writers) is created in the constructor; the thread
+// only reads, converts into a sample on its own stack and writes.
+//
+// Lockstep runs: the executive may call flush() at a frame boundary to wait until every reliable
+// sample has been acknowledged by the monitors that are listening, so a monitor of a simulated run
+// loses nothing however fast the simulation runs (remote/README.md, "Pacing").
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <thread>
+
+#include "ringlet/remote/domain.hpp"
+#include "ringlet/whiteboard/whiteboard.hpp"
+
+namespace ringlet::remote {
+
+struct TypeRate {
+  bool publish = true;
+  std::chrono::nanoseconds min_period{0};  // 0: every generation; else at most one sample per period
+};
+
+struct BridgeConfig {
+  std::uint16_t robot = 0;
+  DomainConfig domain{};
+  std::chrono::milliseconds poll_period{2};
+  std::array<TypeRate, wb::kTypeCount> types{};  // by position in wb::kTypes
+};
+
+struct TypeCounts {
+  std::uint64_t sent = 0;
+  std::uint64_t missed = 0;
+  std::uint64_t rate_skipped = 0;
+  std::uint64_t failed = 0;
+  TypeCounts& operator+=(const TypeCounts& o) noexcept {
+    sent += o.sent;
+    missed += o.missed;
+    rate_skipped += o.rate_skipped;
+    failed += o.failed;
+    return *this;
+  }
+};
+
+class Bridge {
+ public:
+  /// Joins the domain and creates a writer per published type (throws RemoteError).
+  Bridge(const wb::Whiteboard& board, BridgeConfig config);
+  ~Bridge();
+  Bridge(const Bridge&) = delete;
+  Bridge& operator=(const Bridge&) = delete;
+
+  /// Starts / stops the thread that calls pump() every poll period. stop() pumps once more, so
+  /// everything posted before it is sent.
+  void start();
+  void stop() noexcept;
+  [[nodiscard]] bool running() const noexcept { return thread_.joinable(); }
+
+  /// One pass over every published type; returns the samples written. Called by the thread, or
+  /// (without the thread) by a caller that wants to choose when.
+  std::size_t pump() noexcept;
+
+  /// Waits up to `timeout` until every reliable sample written so far is acknowledged by every
+  /// matched reader; false on timeout.
+  bool flush(std::chrono::milliseconds timeout) noexcept;
+
+  /// Readers matched to T's writer (0 when T is not published).
+  template <wb::Message T>
+  [[nodiscard]] std::uint32_t matched_readers() const noexcept {
+    return matched(wb::kIndexOf<T>);
+  }
+
+  [[nodiscard]] TypeCounts counts(wb::TypeId type) const noexcept;
+  [[nodiscard]] TypeCounts totals() const noexcept;
+  [[nodiscard]] const BridgeConfig& config() const noexcept { return config_; }
+  [[nodiscard]] Participant& participant() noexcept { return participant_; }
+
+ private:
+  struct Slot {
+    dds_entity_t writer = 0;
+    std::uint64_t last = 0;  // the newest generation handled (sent, missed or skipped)
+    std::chrono::steady_clock::time_point last_sent{};
+    std::atomic<std::uint64_t> sent{0};
+    std::atomic<std::uint64_t> missed{0};
+    std::atomic<std::uint64_t> rate_skipped{0};
+    std::atomic<std::uint64_t> failed{0};
+  };
+  template <wb::Message T>
+  std::size_t pump_type(std::chrono::steady_clock::time_point now) noexcept;
+  template <wb::Message T>
+  bool write(Slot& slot, const T& msg, std::uint64_t generation) noexcept;
+  [[nodiscard]] std::uint32_t matched(std::size_t index) const noexcept;
+
+  const wb::Whiteboard& board_;
+  BridgeConfig config_;
+  Participant participant_;
+  std::array<Slot, wb::kTypeCount> slots_{};
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+}  // namespace ringlet::remote

@@ -1,0 +1,133 @@
+#include "ringlet/remote/bridge.hpp"
+
+#include <utility>
+
+namespace ringlet::remote {
+
+Bridge::Bridge(const wb::Whiteboard& board, BridgeConfig config)
+    : board_(board), config_(std::move(config)), participant_(config_.domain) {
+  wb::for_each_type([&]<class T>(std::type_identity<T>) {
+    constexpr std::size_t i = wb::kIndexOf<T>;
+    if (config_.types[i].publish) slots_[i].writer = participant_.writer<T>();
+  });
+}
+
+Bridge::~Bridge() { stop(); }
+
+void Bridge::start() {
+  if (thread_.joinable()) return;
+  stop_.store(false);
+  thread_ = std::thread([this] {
+    while (!stop_.load(std::memory_order_relaxed)) {
+      pump();
+      std::this_thread::sleep_for(config_.poll_period);
+    }
+  });
+}
+
+void Bridge::stop() noexcept {
+  if (!thread_.joinable()) return;
+  stop_.store(true);
+  thread_.join();
+  pump();
+}
+
+std::size_t Bridge::pump() noexcept {
+  const auto now = std::chrono::steady_clock::now();
+  std::size_t written = 0;
+  wb::for_each_type([&]<class T>(std::type_identity<T>) { written += pump_type<T>(now); });
+  return written;
+}
+
+template <wb::Message T>
+bool Bridge::write(Slot& slot, const T& msg, std::uint64_t generation) noexcept {
+  typename DdsType<T>::Sample sample{};
+  to_sample(msg, config_.robot, generation, sample);
+  if (dds_write(slot.writer, &sample) < 0) {
+    slot.failed.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+  slot.sent.fetch_add(1, std::memory_order_relaxed);
+  return true;
+}
+
+template <wb::Message T>
+std::size_t Bridge::pump_type(std::chrono::steady_clock::time_point now) noexcept {
+  Slot& slot = slots_[wb::kIndexOf<T>];
+  if (slot.writer == 0) return 0;
+  const std::uint64_t newest = board_.generation<T>();
+  if (newest <= slot.last) return 0;
+  const auto period = config_.types[wb::kIndexOf<T>].min_period;
+  std::size_t written = 0;
+  if (period.count() > 0) {
+    // Rate-limited: the newest generation once per period; the ones before it are skipped.
+    if (slot.last_sent != std::chrono::steady_clock::time_point{} && now - slot.last_sent < period) return 0;
+    const wb::ReadResult<T> r = board_.read<T>(newest);
+    if (r.ok()) {
+      slot.rate_skipped.fetch_add(newest - slot.last - 1, std::memory_order_relaxed);
+      written += write(slot, r.msg, newest) ? 1U : 0U;
+      slot.last_sent = now;
+    } else {
+      slot.missed.fetch_add(newest - slot.last, std::memory_order_relaxed);
+    }
+    slot.last = newest;
+    return written;
+  }
+  // Every generation, oldest first; what the ring no longer holds is counted and skipped.
+  std::uint64_t g = slot.last + 1;
+  while (g <= newest) {
+    const wb::ReadResult<T> r = board_.read<T>(g);
+    if (r.status == wb::ReadStatus::kMissed) {
+      const std::uint64_t lost = std::max<std::uint64_t>(r.missed, 1);
+      slot.missed.fetch_add(lost, std::memory_order_relaxed);
+      g += lost;
+      continue;
+    }
+    if (!r.ok()) break;  // kNotYet: a writer is mid-post; the next pass gets it
+    written += write(slot, r.msg, g) ? 1U : 0U;
+    slot.last = g;
+    ++g;
+  }
+  slot.last = std::max(slot.last, std::min(g - 1, newest));
+  if (written > 0) slot.last_sent = now;
+  return written;
+}
+
+bool Bridge::flush(std::chrono::milliseconds timeout) noexcept {
+  const dds_time_t deadline =
+      dds_time() + static_cast<dds_duration_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count());
+  bool all = true;
+  wb::for_each_type([&]<class T>(std::type_identity<T>) {
+    const Slot& slot = slots_[wb::kIndexOf<T>];
+    if (slot.writer == 0 || topic_qos(T::kId).kind == TopicKind::kTelemetry) return;
+    const dds_duration_t left = std::max<dds_duration_t>(deadline - dds_time(), 0);
+    all = dds_wait_for_acks(slot.writer, left) == DDS_RETCODE_OK && all;
+  });
+  return all;
+}
+
+std::uint32_t Bridge::matched(std::size_t index) const noexcept {
+  const Slot& slot = slots_[index];
+  if (slot.writer == 0) return 0;
+  dds_publication_matched_status_t st{};
+  if (dds_get_publication_matched_status(slot.writer, &st) < 0) return 0;
+  return st.current_count;
+}
+
+TypeCounts Bridge::counts(wb::TypeId type) const noexcept {
+  for (std::size_t i = 0; i < wb::kTypeCount; ++i) {
+    if (wb::kTypes[i].id != type) continue;
+    const Slot& s = slots_[i];
+    return {s.sent.load(std::memory_order_relaxed), s.missed.load(std::memory_order_relaxed),
+            s.rate_skipped.load(std::memory_order_relaxed), s.failed.load(std::memory_order_relaxed)};
+  }
+  return {};
+}
+
+TypeCounts Bridge::totals() const noexcept {
+  TypeCounts t;
+  for (const auto& info : wb::kTypes) t += counts(info.id);
+  return t;
+}
+
+}  // namespace ringlet::remote
