@@ -79,7 +79,12 @@ inline bool get(const double& s, double& d) noexcept {
 template <wb::SchemaEnum E, class C>
   requires std::is_enum_v<C>
 bool get(const C& s, E& d) noexcept {
-  const auto raw = static_cast<long long>(s);
+  // The bits as an integer: a value outside the C enum's enumerators may arrive from the network,
+  // and reading it as the enum type would already be undefined behaviour in C++.
+  std::underlying_type_t<C> bits{};
+  static_assert(sizeof bits == sizeof s);
+  std::memcpy(&bits, &s, sizeof bits);
+  const auto raw = static_cast<long long>(bits);
   for (const auto& e : wb::EnumTraits<E>::kEntries) {
     if (static_cast<long long>(e.value) == raw) {
       d = e.value;
