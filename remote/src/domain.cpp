@@ -41,6 +41,7 @@ std::string loopback_config() {
          "<Discovery><ParticipantIndex>auto</ParticipantIndex>"
          "<MaxAutoParticipantIndex>40</MaxAutoParticipantIndex>"
          "<Peers><Peer Address=\"127.0.0.1\"/></Peers></Discovery>"
+         "<Internal><HeartbeatInterval min=\"1ms\" minsched=\"1ms\">5ms</HeartbeatInterval></Internal>"
          "</Domain></CycloneDDS>";
 }
 
@@ -90,6 +91,7 @@ Qos::Qos(const TopicQos& q) : qos_(dds_create_qos()) {
       dds_qset_history(qos_, DDS_HISTORY_KEEP_ALL, DDS_LENGTH_UNLIMITED);
       break;
   }
+  if (q.keep_all) dds_qset_history(qos_, DDS_HISTORY_KEEP_ALL, DDS_LENGTH_UNLIMITED);
 }
 
 Participant::Participant(const DomainConfig& config) : config_(config) {
@@ -146,8 +148,10 @@ dds_entity_t Participant::create_writer(dds_entity_t topic, wb::TypeId id) {
   return check(dds_create_writer(publisher_, topic, qos.get(), nullptr), "creating a writer in " + where(config_));
 }
 
-dds_entity_t Participant::create_reader(dds_entity_t topic, wb::TypeId id) {
-  const Qos qos(topic_qos(id));
+dds_entity_t Participant::create_reader(dds_entity_t topic, wb::TypeId id, bool keep_all) {
+  TopicQos q = topic_qos(id);
+  q.keep_all = keep_all;
+  const Qos qos(q);
   return check(dds_create_reader(subscriber_, topic, qos.get(), nullptr), "creating a reader in " + where(config_));
 }
 

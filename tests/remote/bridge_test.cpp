@@ -79,7 +79,7 @@ TEST(RemoteBridge, AMonitorReceivesEveryFsmStatusInOrder) {
   config.domain = domain;
   Bridge bridge(board, config);
   Participant monitor(domain);
-  const dds_entity_t reader = monitor.reader<wb::FsmStatus>();
+  const dds_entity_t reader = monitor.reader<wb::FsmStatus>(true);
   ASSERT_TRUE(eventually([&] { return bridge.matched_readers<wb::FsmStatus>() == 1; }));
 
   // Three machines, 300 statuses, posted faster than the ring (8 generations) would keep if the
@@ -145,7 +145,7 @@ TEST(RemoteBridge, AMonitorInAnotherProcessReceivesEveryFsmStatusOverUdp) {
   std::vector<DdsType<wb::FsmStatus>::Sample> got;
   {
     Participant monitor(domain);
-    const dds_entity_t reader = monitor.reader<wb::FsmStatus>();
+    const dds_entity_t reader = monitor.reader<wb::FsmStatus>(true);
     got = receive<wb::FsmStatus>(reader, kPosts);
   }
   int wstatus = 0;

@@ -12,6 +12,7 @@
 #include "ringlet/hal/geometry.hpp"
 #include "ringlet/firmware/backend_factory.hpp"
 #include "ringlet/hal/read_file.hpp"
+#include "ringlet/whiteboard/messages.hpp"
 
 namespace ringlet::firmware {
 namespace {
@@ -268,6 +269,50 @@ void read_vision(Section& vision, VisionSettings& v, const std::filesystem::path
   vision.reject_unknown();
 }
 
+// Type names the schema knows ("FsmStatus", ...), for the [remote] per-type keys.
+bool is_message_type(std::string_view name) {
+  for (const auto& t : wb::kTypes) {
+    if (t.name == name) return true;
+  }
+  return false;
+}
+
+void read_remote(Section& remote, RemoteSettings& r, const std::filesystem::path& base_dir) {
+  r.enabled = remote.boolean("enabled", r.enabled);
+  r.robot = remote.integer("robot", r.robot, 0, 65535);
+  r.domain = remote.integer("domain", r.domain, 0, 232);
+  r.partition = remote.text("partition", r.partition);
+  if (r.partition.empty() || r.partition.size() > 256) {
+    remote.fail(*remote.find("partition"), "partition", "must be 1 to 256 characters");
+  }
+  r.cyclone_config = remote.path("cyclone_config", base_dir);
+  r.poll_ms = remote.integer("poll_ms", r.poll_ms, 1, 1000);
+  r.wait_for_monitors = remote.integer("wait_for_monitors", r.wait_for_monitors, 0, 64);
+  r.wait_timeout_s = remote.number("wait_timeout_s", r.wait_timeout_s, 0.0, 3600.0);
+  if (const toml::node* n = remote.find("max_rate_hz")) {
+    const toml::table* t = n->as_table();
+    if (t == nullptr) remote.fail(*n, "max_rate_hz", "must be a table of type name = samples per second, e.g. { LaserScan = 10 }");
+    for (auto&& [k, v] : *t) {
+      const std::string key = "max_rate_hz." + std::string(k.str());
+      if (!is_message_type(k.str())) remote.fail(v, key, "no whiteboard type of that name (schema.def)");
+      const auto hz = v.value<double>();
+      if (!hz || !std::isfinite(*hz) || *hz <= 0.0 || *hz > 100000.0) remote.fail(v, key, "must be a number of samples per second, above 0 and at most 100000");
+      r.max_rate_hz[std::string(k.str())] = *hz;
+    }
+  }
+  if (const toml::node* n = remote.find("unpublished")) {
+    const toml::array* a = n->as_array();
+    if (a == nullptr) remote.fail(*n, "unpublished", "must be an array of type names, e.g. [\"LaserScan\"]");
+    for (const toml::node& e : *a) {
+      const auto name = e.value<std::string>();
+      if (!name) remote.fail(e, "unpublished", "must hold type names (strings)");
+      if (!is_message_type(*name)) remote.fail(e, "unpublished", "no whiteboard type \"" + *name + "\" (schema.def)");
+      r.unpublished.push_back(*name);
+    }
+  }
+  remote.reject_unknown();
+}
+
 }  // namespace
 
 FirmwareConfig parse_config(std::string_view text, const std::string& source, const std::filesystem::path& base_dir) {
@@ -308,6 +353,8 @@ FirmwareConfig parse_config(std::string_view text, const std::string& source, co
   read_camera(camera, cfg.camera);
   Section vision = in("vision");
   read_vision(vision, cfg.vision, base_dir);
+  Section remote = in("remote");
+  read_remote(remote, cfg.remote, base_dir);
   Section telemetry = in("telemetry");
   cfg.trajectory_every = telemetry.integer("trajectory_every", cfg.trajectory_every, 1, 100000);
   telemetry.reject_unknown();

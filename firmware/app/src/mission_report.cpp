@@ -123,6 +123,11 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
   }
   if (const VisionStats* v = telemetry.vision()) s.vision = *v;
   s.run_hash = run_hash(stack, s);
+  if (const RemoteLink* r = stack.remote()) {
+    const auto& b = r->bridge_config();
+    s.remote = RemoteSummary{b.robot, static_cast<int>(b.domain.id), b.domain.partition, r->totals(),
+                             r->counts(wb::FsmStatus::kId), r->unacknowledged_frames()};
+  }
   return s;
 }
 
@@ -159,6 +164,16 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
                   static_cast<unsigned long long>(v.missed_frames));
     out << line;
   }
+  if (s.remote) {
+    const RemoteSummary& r = *s.remote;
+    std::snprintf(line, sizeof line,
+                  "  remote: robot %d on DDS domain %d, partition \"%s\": %llu samples sent (FsmStatus %llu), "
+                  "%llu missed, %llu rate-limited, %llu failed\n",
+                  r.robot, r.domain, r.partition.c_str(), static_cast<unsigned long long>(r.totals.sent),
+                  static_cast<unsigned long long>(r.fsm_status.sent), static_cast<unsigned long long>(r.totals.missed),
+                  static_cast<unsigned long long>(r.totals.rate_skipped), static_cast<unsigned long long>(r.totals.failed));
+    out << line;
+  }
   if (s.dropped_samples > 0) {
     std::snprintf(line, sizeof line, "  trajectory samples dropped (buffer full): %llu\n",
                   static_cast<unsigned long long>(s.dropped_samples));
@@ -178,6 +193,22 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
     out << line;
   }
 }
+
+namespace {
+nlohmann::json counts_json(const remote::TypeCounts& c) {
+  return {{"sent", c.sent}, {"missed", c.missed}, {"rate_skipped", c.rate_skipped}, {"failed", c.failed}};
+}
+nlohmann::json remote_json(const MissionSummary& s) {
+  if (!s.remote) return nullptr;
+  const RemoteSummary& r = *s.remote;
+  return {{"robot", r.robot},
+          {"domain", r.domain},
+          {"partition", r.partition},
+          {"totals", counts_json(r.totals)},
+          {"fsm_status", counts_json(r.fsm_status)},
+          {"unacknowledged_frames", r.unacknowledged_frames}};
+}
+}  // namespace
 
 nlohmann::json summary_json(const MissionSummary& s) {
   char hash[20];
@@ -216,6 +247,7 @@ nlohmann::json summary_json(const MissionSummary& s) {
           {"machines", machines},
           {"fsm_status_seen", s.fsm_status_seen},
           {"vision", vision},
+          {"remote", remote_json(s)},
           {"trajectory_samples_dropped", s.dropped_samples},
           {"ground_truth", s.truth ? nlohmann::json{{"distance_m", s.truth->distance_m},
                                                     {"collisions", s.truth->collisions}}

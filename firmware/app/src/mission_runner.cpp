@@ -127,7 +127,9 @@ RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomi
     }
     {
       Narrator narrator(stack, log, duration_s);
+      if (RemoteLink* remote = stack.remote()) remote->begin_run(log);
       outcome.reason = exec.run(stack.frames_for(duration_s));
+      if (RemoteLink* remote = stack.remote()) remote->end_run();
     }
     if (watchdog) {
       watchdog->stop();

@@ -127,6 +127,10 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& r
     truth_score_.emplace(*truth, board_);
     executive_->set_observer(&*truth_score_);
   }
+  if (config_.remote.enabled) {
+    remote_ = std::make_unique<RemoteLink>(config_, board_, truth_score_ ? &*truth_score_ : nullptr);
+    executive_->set_observer(remote_.get());
+  }
 }
 
 FirmwareStack::~FirmwareStack() = default;

@@ -47,6 +47,7 @@ enum class TopicKind : std::uint8_t { kState, kTelemetry, kCommand };
 struct TopicQos {
   TopicKind kind = TopicKind::kTelemetry;
   std::int32_t depth = 1;  // history per instance (kState, kTelemetry); kCommand keeps all
+  bool keep_all = false;   // a reader that records everything it receives (ringlet-monitor echo, record)
 };
 [[nodiscard]] TopicQos topic_qos(wb::TypeId type) noexcept;
 [[nodiscard]] const char* to_string(TopicKind kind) noexcept;
@@ -91,16 +92,18 @@ class Participant {
   [[nodiscard]] dds_entity_t writer() {
     return create_writer(topic<T>(), T::kId);
   }
+  /// `keep_all`: the reader keeps every sample until taken (a recorder), instead of the topic's
+  /// last `depth` per instance.
   template <wb::Message T>
-  [[nodiscard]] dds_entity_t reader() {
-    return create_reader(topic<T>(), T::kId);
+  [[nodiscard]] dds_entity_t reader(bool keep_all = false) {
+    return create_reader(topic<T>(), T::kId, keep_all);
   }
 
  private:
   void release() noexcept;  // the participant, and the domain with its last participant
   dds_entity_t create_topic(const dds_topic_descriptor_t* descriptor, const std::string& name, wb::TypeId id);
   dds_entity_t create_writer(dds_entity_t topic, wb::TypeId id);
-  dds_entity_t create_reader(dds_entity_t topic, wb::TypeId id);
+  dds_entity_t create_reader(dds_entity_t topic, wb::TypeId id, bool keep_all);
 
   DomainConfig config_;
   dds_entity_t participant_ = 0;

@@ -100,6 +100,21 @@ struct VisionSettings {
   bool robots = true;                 // the robot stage runs (RobotDetections posted)
 };
 
+/// Remote monitoring ([remote]): the whiteboard published over Cyclone DDS by the bridge
+/// (remote/README.md). Off by default.
+struct RemoteSettings {
+  bool enabled = false;
+  int robot = 0;                        // the robot's id (e.g. its player number), 0-65535
+  int domain = 0;                       // DDS domain id, 0-232
+  std::string partition = "ringlet";    // e.g. the team's name (1-256 characters)
+  std::filesystem::path cyclone_config;  // Cyclone DDS XML file; empty: loopback only
+  int poll_ms = 2;                      // the bridge thread's period (real clock)
+  int wait_for_monitors = 0;            // start the run once this many monitors listen ...
+  double wait_timeout_s = 10.0;         // ... or after this long (then run anyway, with a warning)
+  std::map<std::string, double, std::less<>> max_rate_hz;  // type name -> most samples per second
+  std::vector<std::string> unpublished;                    // type names kept off the network
+};
+
 /// Where each key of the file was written, so that problems found after parsing (binding the
 /// tasks, the world's start pose, the backend, the camera) still name "file:line:col".
 struct ConfigPositions {
@@ -137,6 +152,7 @@ struct FirmwareConfig {
   behaviour::reactive::ReactiveParams reactive{};
   CameraSettings camera{};
   VisionSettings vision{};
+  RemoteSettings remote{};
   int trajectory_every = 10;        // telemetry.trajectory_every: frames between samples
 
   /// The row of the task table named `name`, or null when that task does not run.

@@ -29,6 +29,16 @@ struct TruthSummary {
   HeadTracking head{};          // measured head yaw against the true ball
 };
 
+/// What the bridge published ([remote] enabled): host-dependent counts, never in the run hash.
+struct RemoteSummary {
+  int robot = 0;
+  int domain = 0;
+  std::string partition;
+  remote::TypeCounts totals{};
+  remote::TypeCounts fsm_status{};
+  std::uint64_t unacknowledged_frames = 0;  // lockstep frames the monitors did not acknowledge in time
+};
+
 struct MissionSummary {
   std::string backend;
   std::string world;
@@ -55,6 +65,7 @@ struct MissionSummary {
   std::uint64_t dropped_samples = 0;  // trajectory samples the buffer had no room for
   std::optional<TruthSummary> truth;  // only with ground truth
   std::optional<VisionStats> vision;  // with a camera: what vision found
+  std::optional<RemoteSummary> remote;  // with [remote] enabled
 };
 
 /// `safe_before_shutdown`: the failsafe policy or the watchdog forced the safe state; a signal in

@@ -20,6 +20,7 @@
 #include "ringlet/executive/executive.hpp"
 #include "ringlet/executive/spsc_queue.hpp"
 #include "ringlet/firmware/config.hpp"
+#include "ringlet/firmware/remote_link.hpp"
 #include "ringlet/firmware/task_registry.hpp"
 #include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/firmware/truth_score.hpp"
@@ -60,6 +61,10 @@ class FirmwareStack {
   /// The run scored against ground truth, when there is any, else null.
   [[nodiscard]] const TruthScore* truth_score() const noexcept { return truth_score_ ? &*truth_score_ : nullptr; }
 
+  /// The whiteboard on DDS ([remote] enabled), else null.
+  [[nodiscard]] RemoteLink* remote() noexcept { return remote_.get(); }
+  [[nodiscard]] const RemoteLink* remote() const noexcept { return remote_.get(); }
+
   /// Ends the --record and --wb-log logs (after the run): one line per log that failed, else empty.
   [[nodiscard]] std::vector<std::string> finish_logs() noexcept;
 
@@ -90,6 +95,7 @@ class FirmwareStack {
   std::vector<std::unique_ptr<executive::Task>> tasks_;   // in table order
   std::unique_ptr<executive::Executive> executive_;
   std::optional<TruthScore> truth_score_;
+  std::unique_ptr<RemoteLink> remote_;  // last: it reads the whiteboard until it is gone
 };
 
 }  // namespace ringlet::firmware

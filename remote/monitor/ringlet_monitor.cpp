@@ -1,0 +1,288 @@
+// ringlet-monitor: watches robots' whiteboards over DDS (the firmware's [remote] bridge).
+//
+//   ringlet-monitor list                 robots, types and rates seen during --wait seconds
+//   ringlet-monitor echo TYPE            samples of one type as the whiteboard's text, or --json lines
+//   ringlet-monitor fsm                  every machine's state, previous state and ringlets per robot
+//
+// Exit codes: 0 done · 1 nothing heard (no robot found: the message names the domain, partition
+// and network) · 2 bad input (flags, type name, configuration file) or DDS refused to start.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <string>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+#include "ringlet/hal/read_file.hpp"
+#include "ringlet/remote/domain.hpp"
+#include "ringlet/whiteboard/messages.hpp"
+
+namespace {
+
+using namespace ringlet;
+using Clock = std::chrono::steady_clock;
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_signal(int) { g_stop.store(true); }
+
+struct Options {
+  int domain = 0;
+  std::string partition = "ringlet";
+  std::string config;  // Cyclone DDS XML file
+  double wait_s = 2.0;
+  std::optional<int> robot;
+  bool json = false;
+  long count = 0;  // echo: stop after this many (0: until interrupted or --wait ends)
+  bool once = false;
+  std::string type;
+};
+
+std::string network_text(const Options& o) {
+  return "DDS domain " + std::to_string(o.domain) + ", partition \"" + o.partition + "\", " +
+         (o.config.empty() ? std::string("loopback only (interface lo, peer 127.0.0.1)")
+                           : "the network of " + o.config);
+}
+
+remote::DomainConfig domain_of(const Options& o) {
+  remote::DomainConfig d{static_cast<std::uint32_t>(o.domain), o.partition, ""};
+  if (!o.config.empty()) {
+    const hal::FileRead f = hal::read_file(o.config, "Cyclone DDS configuration");
+    if (!f.ok()) throw remote::RemoteError(f.error);
+    d.cyclone_config = f.bytes;
+  }
+  return d;
+}
+
+// ---- samples as JSON ---------------------------------------------------------------------------
+template <class V>
+nlohmann::json to_json(const V& v) {
+  if constexpr (wb::SchemaEnum<V>) {
+    for (const auto& e : wb::EnumTraits<V>::kEntries) {
+      if (e.value == v) return std::string(e.text);
+    }
+    return static_cast<long long>(v);
+  } else if constexpr (std::is_same_v<V, bool> || std::is_arithmetic_v<V>) {
+    return v;
+  } else if constexpr (requires { v.view(); }) {
+    return std::string(v.view());
+  } else {
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& e : v) a.push_back(to_json(e));
+    return a;
+  }
+}
+
+template <wb::Message T>
+nlohmann::json message_json(const T& m, std::uint16_t robot, std::uint64_t generation) {
+  nlohmann::json fields = nlohmann::json::object();
+  visit_fields(m, [&](std::string_view name, const auto& value) { fields[std::string(name)] = to_json(value); });
+  return {{"type", std::string(T::kName)}, {"robot", robot}, {"generation", generation}, {"fields", fields}};
+}
+
+// Takes everything the reader holds; calls f(robot, generation, message) for each valid sample
+// (samples that do not validate are counted and skipped).
+template <wb::Message T, class F>
+void take_all(dds_entity_t reader, std::uint64_t& invalid, F&& f) {
+  constexpr int kBatch = 32;
+  static std::vector<typename remote::DdsType<T>::Sample> buf(kBatch);
+  void* ptrs[kBatch];
+  dds_sample_info_t infos[kBatch];
+  for (int i = 0; i < kBatch; ++i) ptrs[i] = &buf[static_cast<std::size_t>(i)];
+  for (dds_return_t n = kBatch; n == kBatch;) {
+    n = dds_take(reader, ptrs, infos, kBatch, kBatch);
+    for (dds_return_t i = 0; i < n; ++i) {
+      if (!infos[i].valid_data) continue;
+      const auto& s = buf[static_cast<std::size_t>(i)];
+      T m;
+      if (!remote::from_sample(s, m)) {
+        ++invalid;
+        continue;
+      }
+      f(s.robot, s.generation, m);
+    }
+  }
+}
+
+// ---- commands ----------------------------------------------------------------------------------
+int list(const Options& o) {
+  remote::Participant p(domain_of(o));
+  std::array<dds_entity_t, wb::kTypeCount> readers{};
+  wb::for_each_type([&]<class T>(std::type_identity<T>) { readers[wb::kIndexOf<T>] = p.reader<T>(true); });
+  struct Seen {
+    std::uint64_t samples = 0;
+    std::uint64_t first = 0, last = 0;  // generations
+  };
+  std::map<std::pair<int, std::string_view>, Seen> seen;
+  std::uint64_t invalid = 0;
+  const auto start = Clock::now();
+  while (!g_stop.load() && Clock::now() - start < std::chrono::duration<double>(o.wait_s)) {
+    wb::for_each_type([&]<class T>(std::type_identity<T>) {
+      take_all<T>(readers[wb::kIndexOf<T>], invalid, [&](std::uint16_t robot, std::uint64_t gen, const T&) {
+        if (o.robot && *o.robot != robot) return;
+        Seen& s = seen[{robot, T::kName}];
+        if (s.samples == 0) s.first = gen;
+        ++s.samples;
+        s.last = gen;
+      });
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds{5});
+  }
+  const double secs = std::chrono::duration<double>(Clock::now() - start).count();
+  if (seen.empty()) {
+    std::cerr << "ringlet-monitor: no robot found in " << o.wait_s << " s on " << network_text(o) << "\n";
+    return 1;
+  }
+  std::printf("%-6s %-18s %-7s %10s %12s %10s\n", "ROBOT", "TYPE", "QOS", "SAMPLES", "GENERATION", "RATE Hz");
+  for (const auto& [key, s] : seen) {
+    const auto info = wb::find_type(key.second);
+    std::printf("%-6d %-18.*s %-7s %10llu %12llu %10.1f\n", key.first, static_cast<int>(key.second.size()),
+                key.second.data(), remote::to_string(remote::topic_qos(info->id).kind),
+                static_cast<unsigned long long>(s.samples), static_cast<unsigned long long>(s.last),
+                static_cast<double>(s.samples) / secs);
+  }
+  if (invalid > 0) std::printf("(%llu samples refused: values without whiteboard meaning)\n", static_cast<unsigned long long>(invalid));
+  return 0;
+}
+
+template <wb::Message T>
+int echo(const Options& o) {
+  remote::Participant p(domain_of(o));
+  const dds_entity_t reader = p.reader<T>(true);
+  long printed = 0;
+  std::uint64_t invalid = 0;
+  const auto start = Clock::now();
+  const bool timed = o.wait_s > 0.0 && o.count == 0 ? false : o.wait_s > 0.0;
+  while (!g_stop.load() && (o.count == 0 || printed < o.count)) {
+    take_all<T>(reader, invalid, [&](std::uint16_t robot, std::uint64_t gen, const T& m) {
+      if ((o.robot && *o.robot != robot) || (o.count > 0 && printed >= o.count)) return;
+      if (o.json) {
+        std::cout << message_json(m, robot, gen).dump() << '\n';
+      } else {
+        std::cout << "robot " << robot << " " << T::kName << " #" << gen << ": " << m.description() << '\n';
+      }
+      ++printed;
+    });
+    std::cout.flush();
+    if (timed && Clock::now() - start > std::chrono::duration<double>(o.wait_s)) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds{2});
+  }
+  if (printed == 0) {
+    std::cerr << "ringlet-monitor: no " << T::kName << " received on " << network_text(o) << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+int fsm(const Options& o) {
+  remote::Participant p(domain_of(o));
+  const dds_entity_t reader = p.reader<wb::FsmStatus>();  // transient-local: current states at once
+  std::map<std::pair<int, std::string>, std::pair<wb::FsmStatus, std::uint64_t>> table;
+  std::uint64_t invalid = 0;
+  const auto start = Clock::now();
+  auto next_draw = start;
+  const auto draw = [&](bool clear) {
+    if (clear) std::cout << "\x1b[H\x1b[2J";
+    char line[256];
+    std::snprintf(line, sizeof line, "%-6s %-14s %-16s %-16s %12s %-9s %s\n", "ROBOT", "MACHINE", "STATE", "PREVIOUS",
+                  "RINGLETS", "SUSPENDED", "GENERATION");
+    std::cout << line;
+    for (const auto& [key, v] : table) {
+      const wb::FsmStatus& s = v.first;
+      std::snprintf(line, sizeof line, "%-6d %-14s %-16.*s %-16.*s %12llu %-9s %llu\n", key.first, key.second.c_str(),
+                    static_cast<int>(s.state.view().size()), s.state.view().data(),
+                    static_cast<int>(s.previous.view().size()), s.previous.view().data(),
+                    static_cast<unsigned long long>(s.ringlets), s.suspended ? "yes" : "no",
+                    static_cast<unsigned long long>(v.second));
+      std::cout << line;
+    }
+    std::cout.flush();
+  };
+  auto last_update = start;
+  while (!g_stop.load()) {
+    take_all<wb::FsmStatus>(reader, invalid, [&](std::uint16_t robot, std::uint64_t gen, const wb::FsmStatus& s) {
+      if (o.robot && *o.robot != robot) return;
+      auto& slot = table[{robot, std::string(s.machine.view())}];
+      if (gen >= slot.second) slot = {s, gen};
+      last_update = Clock::now();
+    });
+    const auto now = Clock::now();
+    if (o.once) {
+      // Done once the states have settled (nothing new for half a second), or at --wait.
+      if (!table.empty() && now - last_update > std::chrono::milliseconds{500}) break;
+      if (now - start > std::chrono::duration<double>(o.wait_s)) break;
+    } else if (now >= next_draw) {
+      draw(true);
+      next_draw = now + std::chrono::milliseconds{200};
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds{5});
+  }
+  if (table.empty()) {
+    std::cerr << "ringlet-monitor: no machine states received on " << network_text(o) << "\n";
+    return 1;
+  }
+  if (o.once) draw(false);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "ringlet-monitor: watch robots' whiteboards over DDS (the firmware's [remote] bridge). "
+      "Exit codes: 0 done, 1 nothing heard, 2 bad input or DDS refused to start."};
+  Options o;
+  app.add_option("--domain", o.domain, "DDS domain id")->check(CLI::Range(0, 232))->capture_default_str();
+  app.add_option("--partition", o.partition, "DDS partition (the robots' [remote] partition)")->capture_default_str();
+  app.add_option("--config", o.config, "Cyclone DDS XML file for a real network (default: loopback only)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--robot", o.robot, "only this robot id")->check(CLI::Range(0, 65535));
+  app.require_subcommand(1);
+
+  auto* list_cmd = app.add_subcommand("list", "robots, types and rates heard during --wait seconds");
+  list_cmd->add_option("--wait", o.wait_s, "seconds to listen")->check(CLI::Range(0.1, 3600.0))->capture_default_str();
+
+  auto* echo_cmd = app.add_subcommand("echo", "samples of one type, as the whiteboard's text or JSON lines");
+  echo_cmd->add_option("type", o.type, "whiteboard type, e.g. FsmStatus")->required();
+  echo_cmd->add_flag("--json", o.json, "one JSON object per line (type, robot, generation, fields)");
+  echo_cmd->add_option("-n,--count", o.count, "stop after this many samples (0: until Ctrl-C)")->check(CLI::Range(0L, 1000000000L));
+  echo_cmd->add_option("--wait", o.wait_s, "with --count: give up after this many seconds")->check(CLI::Range(0.1, 86400.0));
+
+  auto* fsm_cmd = app.add_subcommand("fsm", "a live table of every machine's state per robot (Ctrl-C ends)");
+  fsm_cmd->add_flag("--once", o.once, "print the table once the states have settled (nothing new for 0.5 s), or after --wait seconds, and exit");
+  fsm_cmd->add_option("--wait", o.wait_s, "with --once: most seconds to listen")->check(CLI::Range(0.1, 3600.0));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  try {
+    if (list_cmd->parsed()) return list(o);
+    if (fsm_cmd->parsed()) return fsm(o);
+    int rc = -1;
+    wb::for_each_type([&]<class T>(std::type_identity<T>) {
+      if (T::kName == o.type) rc = echo<T>(o);
+    });
+    if (rc < 0) {
+      std::string names;
+      for (const auto& t : wb::kTypes) names += (names.empty() ? "" : ", ") + std::string(t.name);
+      std::cerr << "ringlet-monitor: echo: no whiteboard type \"" << o.type << "\"; the types are " << names << "\n";
+      return 2;
+    }
+    return rc;
+  } catch (const remote::RemoteError& e) {
+    std::cerr << "ringlet-monitor: " << e.what() << "\n";
+    return 2;
+  }
+}
