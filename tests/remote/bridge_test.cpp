@@ -71,13 +71,34 @@ wb::FsmStatus status(const char* machine, std::uint64_t ringlets) {
   return s;
 }
 
+BridgeConfig robot_config(std::uint16_t robot, const DomainConfig& domain) {
+  BridgeConfig config;
+  config.robot = robot;
+  config.domain = domain;
+  return config;
+}
+
+// Every generation 1..posts exactly once, from `robot`, and each machine's ringlets rising (DDS
+// keeps the order per instance: per robot and machine).
+void expect_every_status_once_in_order(const std::vector<DdsType<wb::FsmStatus>::Sample>& got, std::uint64_t posts,
+                                       std::uint16_t robot) {
+  ASSERT_EQ(got.size(), posts);
+  std::vector<bool> seen(posts + 1, false);
+  std::map<std::string, std::uint64_t> last;
+  for (const auto& s : got) {
+    EXPECT_EQ(s.robot, robot);
+    ASSERT_TRUE(s.generation >= 1 && s.generation <= posts) << s.generation;
+    EXPECT_FALSE(seen[s.generation]) << "generation " << s.generation << " twice";
+    seen[s.generation] = true;
+    EXPECT_GT(s.ringlets, last[s.machine]) << s.machine << " out of order";
+    last[s.machine] = s.ringlets;
+  }
+}
+
 TEST(RemoteBridge, AMonitorReceivesEveryFsmStatusInOrder) {
   const DomainConfig domain = test_domain();
   wb::Whiteboard board;
-  BridgeConfig config;
-  config.robot = 7;
-  config.domain = domain;
-  Bridge bridge(board, config);
+  Bridge bridge(board, robot_config(7, domain));
   Participant monitor(domain);
   const dds_entity_t reader = monitor.reader<wb::FsmStatus>(true);
   ASSERT_TRUE(eventually([&] { return bridge.matched_readers<wb::FsmStatus>() == 1; }));
@@ -93,21 +114,8 @@ TEST(RemoteBridge, AMonitorReceivesEveryFsmStatusInOrder) {
   }
   ASSERT_TRUE(bridge.flush(10s));
   const auto got = receive<wb::FsmStatus>(reader, kPosts);
-  ASSERT_EQ(got.size(), kPosts);
-  // In order per machine (DDS orders per instance), and every generation exactly once.
-  std::map<std::string, std::uint64_t> last_ringlets;
-  std::vector<bool> seen(kPosts + 1, false);
-  for (const auto& s : got) {
-    EXPECT_EQ(s.robot, 7);
-    ASSERT_GE(s.generation, 1U);
-    ASSERT_LE(s.generation, kPosts);
-    EXPECT_FALSE(seen[s.generation]) << "generation " << s.generation << " twice";
-    seen[s.generation] = true;
-    EXPECT_EQ(s.ringlets, s.generation);  // posted with ringlets = its generation
-    auto& last = last_ringlets[s.machine];
-    EXPECT_GT(s.ringlets, last) << s.machine << " out of order";
-    last = s.ringlets;
-  }
+  expect_every_status_once_in_order(got, kPosts, 7);
+  for (const auto& st : got) EXPECT_EQ(st.ringlets, st.generation);  // posted with ringlets = its generation
   const TypeCounts c = bridge.counts(wb::FsmStatus::kId);
   EXPECT_EQ(c.sent, kPosts);
   EXPECT_EQ(c.missed, 0U);
@@ -125,10 +133,7 @@ TEST(RemoteBridge, AMonitorInAnotherProcessReceivesEveryFsmStatusOverUdp) {
     int rc = 1;
     try {
       wb::Whiteboard board;
-      BridgeConfig config;
-      config.robot = 9;
-      config.domain = domain;
-      Bridge bridge(board, config);
+      Bridge bridge(board, robot_config(9, domain));
       if (eventually([&] { return bridge.matched_readers<wb::FsmStatus>() == 1; }, 20s)) {
         for (std::uint64_t i = 1; i <= kPosts; ++i) {
           board.post(status(i % 2 == 0 ? "Safety" : "Mission", i));
@@ -152,26 +157,13 @@ TEST(RemoteBridge, AMonitorInAnotherProcessReceivesEveryFsmStatusOverUdp) {
   ASSERT_EQ(::waitpid(child, &wstatus, 0), child);
   ASSERT_TRUE(WIFEXITED(wstatus));
   EXPECT_EQ(WEXITSTATUS(wstatus), 0) << "the robot process: 1 no monitor matched, 2 not all acknowledged, 3 threw";
-  ASSERT_EQ(got.size(), kPosts);
-  std::vector<bool> seen(kPosts + 1, false);
-  std::map<std::string, std::uint64_t> last;
-  for (const auto& s : got) {
-    EXPECT_EQ(s.robot, 9);
-    ASSERT_TRUE(s.generation >= 1 && s.generation <= kPosts);
-    EXPECT_FALSE(seen[s.generation]);
-    seen[s.generation] = true;
-    EXPECT_GT(s.ringlets, last[s.machine]) << s.machine << " out of order";
-    last[s.machine] = s.ringlets;
-  }
+  expect_every_status_once_in_order(got, kPosts, 9);
 }
 
 TEST(RemoteBridge, ALateMonitorSeesEveryMachinesCurrentState) {
   const DomainConfig domain = test_domain();
   wb::Whiteboard board;
-  BridgeConfig config;
-  config.robot = 3;
-  config.domain = domain;
-  Bridge bridge(board, config);
+  Bridge bridge(board, robot_config(3, domain));
   bridge.start();
   for (std::uint64_t i = 1; i <= 30; ++i) {
     board.post(status(i % 2 == 0 ? "Safety" : "Mission", i));
@@ -196,12 +188,8 @@ TEST(RemoteBridge, ALateMonitorSeesEveryMachinesCurrentState) {
 TEST(RemoteBridge, TwoRobotsAreToldApart) {
   const DomainConfig domain = test_domain();
   wb::Whiteboard board1, board2;
-  BridgeConfig c1, c2;
-  c1.robot = 1;
-  c2.robot = 2;
-  c1.domain = c2.domain = domain;
-  Bridge robot1(board1, c1);
-  Bridge robot2(board2, c2);
+  Bridge robot1(board1, robot_config(1, domain));
+  Bridge robot2(board2, robot_config(2, domain));
   Participant monitor(domain);
   const dds_entity_t reader = monitor.reader<wb::Pose>();
   ASSERT_TRUE(eventually([&] {
