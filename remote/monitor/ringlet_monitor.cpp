@@ -3,6 +3,9 @@
 //   ringlet-monitor list                 robots, types and rates seen during --wait seconds
 //   ringlet-monitor echo TYPE            samples of one type as the whiteboard's text, or --json lines
 //   ringlet-monitor fsm                  every machine's state, previous state and ringlets per robot
+//   ringlet-monitor --robot N control MACHINE suspend|resume|restart
+//                                        asks robot N (its [remote] accept lists FsmControl) and
+//                                        waits until its FsmStatus shows the effect
 //
 // Exit codes: 0 done · 1 nothing heard (no robot found: the message names the domain, partition
 // and network) · 2 bad input (flags, type name, configuration file) or DDS refused to start.
@@ -233,6 +236,77 @@ int fsm(const Options& o) {
   return 0;
 }
 
+std::string past(const std::string& verb) { return verb + (verb.ends_with('e') ? "d" : "ed"); }
+
+// Asks robot --robot to suspend, resume or restart a machine, and waits until its FsmStatus shows
+// the effect.
+int control(const Options& o, const std::string& machine, const std::string& command_text) {
+  if (!o.robot) {
+    std::cerr << "ringlet-monitor: control: --robot is required (which robot to ask)\n";
+    return 2;
+  }
+  wb::FsmControl request;
+  bool known = false;
+  for (const auto& e : wb::EnumTraits<wb::FsmCommand>::kEntries) {
+    if (e.text == command_text) {
+      request.command = e.value;
+      known = true;
+    }
+  }
+  if (!known) {
+    std::cerr << "ringlet-monitor: control: command \"" << command_text << "\" must be suspend, resume or restart\n";
+    return 2;
+  }
+  if (machine.empty() || !request.machine.assign(machine)) {
+    std::cerr << "ringlet-monitor: control: machine name \"" << machine << "\" must be 1 to "
+              << decltype(request.machine)::kCapacity << " characters\n";
+    return 2;
+  }
+  const auto robot = static_cast<std::uint16_t>(*o.robot);
+  remote::Participant p(domain_of(o));
+  const dds_entity_t status_reader = p.reader<wb::FsmStatus>();
+  const dds_entity_t writer = p.request_writer<wb::FsmControl>();
+  const auto deadline = Clock::now() + std::chrono::duration<double>(o.wait_s);
+  dds_publication_matched_status_t matched{};
+  while (!g_stop.load() && Clock::now() < deadline &&
+         (dds_get_publication_matched_status(writer, &matched) < 0 || matched.current_count == 0)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds{5});
+  }
+  if (matched.current_count == 0) {
+    std::cerr << "ringlet-monitor: control: no robot takes remote writes on " << network_text(o)
+              << " (is robot " << robot << " running with [remote] accept = [\"FsmControl\"]?)\n";
+    return 1;
+  }
+  // What the machine looked like before: a restart shows as a newer status of that machine.
+  std::uint64_t invalid = 0;
+  std::uint64_t newest_before = 0;
+  take_all<wb::FsmStatus>(status_reader, invalid, [&](std::uint16_t r, std::uint64_t gen, const wb::FsmStatus& s) {
+    if (r == robot && s.machine.view() == machine) newest_before = std::max(newest_before, gen);
+  });
+  remote::DdsType<wb::FsmControl>::Sample sample{};
+  remote::to_sample(request, robot, 1, sample);
+  remote::check(dds_write(writer, &sample), "sending the request");
+  (void)dds_wait_for_acks(writer, DDS_SECS(5));
+  while (!g_stop.load() && Clock::now() < deadline) {
+    bool done = false;
+    take_all<wb::FsmStatus>(status_reader, invalid, [&](std::uint16_t r, std::uint64_t gen, const wb::FsmStatus& s) {
+      if (done || r != robot || s.machine.view() != machine || gen <= newest_before) return;
+      const bool effect = request.command == wb::kSuspend  ? s.suspended
+                          : request.command == wb::kResume ? !s.suspended
+                                                           : true;
+      if (!effect) return;
+      std::cout << "robot " << robot << ": " << machine << " " << past(command_text) << ": state " << s.state.view()
+                << (s.suspended ? " (suspended)" : "") << ", ringlets " << s.ringlets << "\n";
+      done = true;
+    });
+    if (done) return 0;
+    std::this_thread::sleep_for(std::chrono::milliseconds{5});
+  }
+  std::cerr << "ringlet-monitor: control: robot " << robot << " did not show " << machine << " " << past(command_text)
+            << " within " << o.wait_s << " s (it may have refused the request: its log says why)\n";
+  return 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -260,6 +334,13 @@ int main(int argc, char** argv) {
   fsm_cmd->add_flag("--once", o.once, "print the table once the states have settled (nothing new for 0.5 s), or after --wait seconds, and exit");
   fsm_cmd->add_option("--wait", o.wait_s, "with --once: most seconds to listen")->check(CLI::Range(0.1, 3600.0));
 
+  auto* control_cmd = app.add_subcommand("control", "ask --robot to suspend, resume or restart a machine ([remote] accept must list FsmControl)");
+  std::string control_machine;
+  std::string control_command;
+  control_cmd->add_option("machine", control_machine, "machine name, e.g. Mission")->required();
+  control_cmd->add_option("command", control_command, "suspend, resume or restart")->required();
+  control_cmd->add_option("--wait", o.wait_s, "seconds to wait for the robot and the effect")->check(CLI::Range(0.1, 3600.0));
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -270,6 +351,7 @@ int main(int argc, char** argv) {
   try {
     if (list_cmd->parsed()) return list(o);
     if (fsm_cmd->parsed()) return fsm(o);
+    if (control_cmd->parsed()) return control(o, control_machine, control_command);
     int rc = -1;
     wb::for_each_type([&]<class T>(std::type_identity<T>) {
       if (T::kName == o.type) rc = echo<T>(o);

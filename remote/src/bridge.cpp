@@ -1,14 +1,46 @@
 #include "ringlet/remote/bridge.hpp"
 
+#include <algorithm>
 #include <utility>
 
 namespace ringlet::remote {
+namespace {
+
+// A request's own check beyond the value ranges from_sample enforces: "" when it may be applied.
+template <class T>
+std::string check_request(const T& /*msg*/, const BridgeConfig& /*config*/) {
+  return {};
+}
+std::string check_request(const wb::FsmControl& c, const BridgeConfig& config) {
+  const std::string_view name = c.machine.view();
+  if (name.empty()) return "no machine named";
+  if (config.machines.empty() || std::find(config.machines.begin(), config.machines.end(), name) != config.machines.end()) {
+    return {};
+  }
+  std::string known;
+  for (const auto& m : config.machines) known += (known.empty() ? "" : ", ") + m;
+  return "no machine \"" + std::string(name) + "\" on this robot (" + known + ")";
+}
+std::string check_request(const wb::MissionGoals& g, const BridgeConfig& /*config*/) {
+  if (g.count < 1 || g.count > g.x.size()) return "count must be 1 to " + std::to_string(g.x.size());
+  if (!(g.tolerance > 0.0)) return "tolerance must be above 0";
+  return {};
+}
+
+}  // namespace
 
 Bridge::Bridge(const wb::Whiteboard& board, BridgeConfig config)
-    : board_(board), config_(std::move(config)), participant_(config_.domain) {
+    : board_(board),
+      config_(std::move(config)),
+      participant_(config_.domain),
+      inbox_(config_.accept, config_.inbox_capacity) {
+  const bool remote_writes = std::any_of(config_.accept.begin(), config_.accept.end(), [](bool a) { return a; });
   wb::for_each_type([&]<class T>(std::type_identity<T>) {
     constexpr std::size_t i = wb::kIndexOf<T>;
     if (config_.types[i].publish) slots_[i].writer = participant_.writer<T>();
+    // With remote writes on, every type's requests are read, so that the ones not allowed are
+    // counted and described rather than left unheard.
+    if (remote_writes) slots_[i].request_reader = participant_.request_reader<T>();
   });
 }
 
@@ -35,8 +67,58 @@ void Bridge::stop() noexcept {
 std::size_t Bridge::pump() noexcept {
   const auto now = std::chrono::steady_clock::now();
   std::size_t written = 0;
-  wb::for_each_type([&]<class T>(std::type_identity<T>) { written += pump_type<T>(now); });
+  wb::for_each_type([&]<class T>(std::type_identity<T>) {
+    written += pump_type<T>(now);
+    take_requests<T>();
+  });
   return written;
+}
+
+template <wb::Message T>
+void Bridge::take_requests() noexcept {
+  Slot& slot = slots_[wb::kIndexOf<T>];
+  if (slot.request_reader == 0) return;
+  constexpr int kBatch = 8;
+  typename DdsType<T>::Sample samples[kBatch];
+  void* ptrs[kBatch];
+  dds_sample_info_t infos[kBatch];
+  for (int i = 0; i < kBatch; ++i) ptrs[i] = &samples[i];
+  for (dds_return_t n = kBatch; n == kBatch;) {
+    n = dds_take(slot.request_reader, ptrs, infos, kBatch, kBatch);
+    for (dds_return_t i = 0; i < n; ++i) {
+      const auto& s = samples[i];
+      if (!infos[i].valid_data || s.robot != config_.robot) continue;  // not for this robot
+      if (!config_.accept[wb::kIndexOf<T>]) {
+        slot.unauthorized.fetch_add(1, std::memory_order_relaxed);
+        refuse(T::kName, s.generation, "remote writes of this type are not allowed ([remote] accept)");
+        continue;
+      }
+      T msg{};
+      if (!from_sample(s, msg)) {
+        slot.malformed.fetch_add(1, std::memory_order_relaxed);
+        refuse(T::kName, s.generation, "a value without whiteboard meaning (an unknown enum value, an unterminated string, NaN)");
+        continue;
+      }
+      if (const std::string why = check_request(msg, config_); !why.empty()) {
+        slot.malformed.fetch_add(1, std::memory_order_relaxed);
+        refuse(T::kName, s.generation, why);
+        continue;
+      }
+      if (inbox_.push(msg)) {
+        slot.accepted.fetch_add(1, std::memory_order_relaxed);
+      } else {
+        slot.dropped.fetch_add(1, std::memory_order_relaxed);
+        refuse(T::kName, s.generation, "the queue to the cycle is full");
+      }
+    }
+  }
+}
+
+void Bridge::refuse(std::string_view type, std::uint64_t request, const std::string& why) noexcept {
+  ++refusals_;
+  if (config_.log == nullptr || (refusals_ > 20 && refusals_ % 100 != 0)) return;
+  *config_.log << "remote: robot " << config_.robot << " refused " << type << " request #" << request << ": " << why
+               << " (" << refusals_ << " refused so far)\n";
 }
 
 template <wb::Message T>
@@ -122,6 +204,22 @@ TypeCounts Bridge::counts(wb::TypeId type) const noexcept {
             s.rate_skipped.load(std::memory_order_relaxed), s.failed.load(std::memory_order_relaxed)};
   }
   return {};
+}
+
+RequestCounts Bridge::requests(wb::TypeId type) const noexcept {
+  for (std::size_t i = 0; i < wb::kTypeCount; ++i) {
+    if (wb::kTypes[i].id != type) continue;
+    const Slot& s = slots_[i];
+    return {s.accepted.load(std::memory_order_relaxed), s.unauthorized.load(std::memory_order_relaxed),
+            s.malformed.load(std::memory_order_relaxed), s.dropped.load(std::memory_order_relaxed)};
+  }
+  return {};
+}
+
+RequestCounts Bridge::request_totals() const noexcept {
+  RequestCounts t;
+  for (const auto& info : wb::kTypes) t += requests(info.id);
+  return t;
 }
 
 TypeCounts Bridge::totals() const noexcept {

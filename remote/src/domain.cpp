@@ -155,4 +155,10 @@ dds_entity_t Participant::create_reader(dds_entity_t topic, wb::TypeId id, bool 
   return check(dds_create_reader(subscriber_, topic, qos.get(), nullptr), "creating a reader in " + where(config_));
 }
 
+dds_entity_t Participant::create_request_entity(dds_entity_t topic, bool writer) {
+  const Qos qos({TopicKind::kCommand, 0});
+  if (writer) return check(dds_create_writer(publisher_, topic, qos.get(), nullptr), "creating a request writer in " + where(config_));
+  return check(dds_create_reader(subscriber_, topic, qos.get(), nullptr), "creating a request reader in " + where(config_));
+}
+
 }  // namespace ringlet::remote

@@ -4,8 +4,8 @@
 
 namespace ringlet::remote {
 
-std::string topic_name(std::string_view type_name) {
-  std::string out = "rt/ringlet/";
+namespace {
+std::string snake(std::string out, std::string_view type_name) {
   for (std::size_t i = 0; i < type_name.size(); ++i) {
     const auto c = static_cast<unsigned char>(type_name[i]);
     if (std::isupper(c) != 0) {
@@ -17,5 +17,9 @@ std::string topic_name(std::string_view type_name) {
   }
   return out;
 }
+}  // namespace
+
+std::string topic_name(std::string_view type_name) { return snake("rt/ringlet/", type_name); }
+std::string request_topic_name(std::string_view type_name) { return snake("rt/ringlet/request/", type_name); }
 
 }  // namespace ringlet::remote

@@ -131,6 +131,94 @@ TEST(FirmwareRemote, ARunComputesTheSameWithTheBridgeAsWithout) {
   EXPECT_EQ(watched.remote->totals.failed, 0U);
 }
 
+// A lockstep run of `seconds` as robot 4 accepting FsmControl, with `send` writing requests from a
+// monitor (this process) once the robot's bridge reads them, before the first frame.
+template <class Send>
+MissionSummary run_with_requests(const std::string& partition, double seconds, Send send) {
+  const std::string text = remote_config(partition, seconds, 0) + "accept = [\"FsmControl\"]\n";
+  const FirmwareConfig cfg = parse_as_shipped(text);
+  FirmwareStack stack(cfg);
+  remote::Participant monitor({0, partition, ""});
+  send(monitor);
+  std::atomic<bool> interrupt{false};
+  std::ostringstream log;
+  const RunOutcome o = run_mission(stack, cfg.mission.timeout_s, interrupt, log);
+  return summarize(stack, o, false);
+}
+
+// Writes `msg` as a request to robot 4 once a robot reads T's requests, and waits until it has it.
+template <wb::Message T>
+void send_request(remote::Participant& monitor, const T& msg) {
+  const dds_entity_t w = monitor.request_writer<T>();
+  const auto end = std::chrono::steady_clock::now() + 20s;
+  dds_publication_matched_status_t st{};
+  while ((dds_get_publication_matched_status(w, &st) < 0 || st.current_count == 0) && std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(2ms);
+  }
+  ASSERT_EQ(st.current_count, 1U) << "the robot's bridge never read " << T::kName << " requests";
+  typename remote::DdsType<T>::Sample sample{};
+  remote::to_sample(msg, 4, 1, sample);
+  ASSERT_EQ(dds_write(w, &sample), DDS_RETCODE_OK);
+  ASSERT_EQ(dds_wait_for_acks(w, DDS_SECS(20)), DDS_RETCODE_OK);
+}
+
+const MachineSummary* machine(const MissionSummary& s, std::string_view name) {
+  for (const auto& m : s.machines) {
+    if (m.name == name) return &m;
+  }
+  return nullptr;
+}
+
+TEST(FirmwareRemote, AnAllowedRemoteControlSuspendsAMachine) {
+  // BallTracker: nothing else in the controller suspends or resumes it (Safety does Mission).
+  const MissionSummary s = run_with_requests(partition_of_this_test(), 5.0, [](remote::Participant& monitor) {
+    wb::FsmControl suspend;
+    suspend.machine = "BallTracker";
+    suspend.command = wb::kSuspend;
+    send_request(monitor, suspend);
+  });
+  ASSERT_TRUE(s.remote.has_value());
+  EXPECT_EQ(s.remote->requests.accepted, 1U);
+  const MachineSummary* tracker = machine(s, "BallTracker");
+  ASSERT_NE(tracker, nullptr);
+  EXPECT_TRUE(tracker->suspended) << "BallTracker ends in " << tracker->state;
+  // Delivered at the second frame's whiteboard task, applied at the next turn: of 500 turns it ran
+  // only the first few.
+  EXPECT_LT(tracker->ringlets, 5U);
+}
+
+TEST(FirmwareRemote, RefusedRemoteWritesAreCountedAndChangeNothing) {
+  const std::string base = with_line(shipped_config_text(), "timeout_s", "timeout_s = 5");
+  const MissionSummary plain = run(base);
+  const MissionSummary s = run_with_requests(partition_of_this_test(), 5.0, [](remote::Participant& monitor) {
+    wb::FsmControl unknown_machine;  // malformed: this robot has no such machine
+    unknown_machine.machine = "Goalkeeper";
+    unknown_machine.command = wb::kSuspend;
+    send_request(monitor, unknown_machine);
+    wb::MotionCommand drive;  // not on the allow-list
+    drive.velocity = 3.0;
+    send_request(monitor, drive);
+  });
+  ASSERT_TRUE(s.remote.has_value());
+  EXPECT_EQ(s.remote->requests.accepted, 0U);
+  EXPECT_EQ(s.remote->requests.malformed, 1U);
+  EXPECT_EQ(s.remote->requests.unauthorized, 1U);
+  // Nothing of them reached the whiteboard: the run is bit-identical to one nobody wrote to.
+  EXPECT_EQ(s.trajectory_hash, plain.trajectory_hash);
+  EXPECT_EQ(s.run_hash, plain.run_hash);
+}
+
+TEST(FirmwareRemote, ATypeWithAWriterInTheControllerCannotBeAccepted) {
+  try {
+    (void)FirmwareStack(parse_as_shipped(remote_config("x", 5.0, 0) + "accept = [\"MissionGoals\"]\n"));
+    FAIL() << "accepted a second writer of MissionGoals";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("remote.accept: \"MissionGoals\" is posted by task 'goals' ("), std::string::npos) << what;
+    EXPECT_NE(what.find("a remote writer would be its second writer"), std::string::npos) << what;
+  }
+}
+
 TEST(FirmwareRemote, BadRemoteSettingsAreRefusedWithWhere) {
   const std::string base = shipped_config_text();
   const auto fails_with = [&](const std::string& section, const std::string& expected) {
@@ -150,6 +238,8 @@ TEST(FirmwareRemote, BadRemoteSettingsAreRefusedWithWhere) {
   fails_with("unpublished = [\"Nope\"]", "remote.unpublished: no whiteboard type \"Nope\"");
   fails_with("partition = \"\"", "remote.partition: must be 1 to 256");
   fails_with("enable = true", "remote.enable: unknown key");
+  fails_with("accept = [\"FsmKontrol\"]", "remote.accept: no whiteboard type \"FsmKontrol\"");
+  fails_with("accept = \"FsmControl\"", "remote.accept: must be an array of type names");
 }
 
 }  // namespace

@@ -300,16 +300,20 @@ void read_remote(Section& remote, RemoteSettings& r, const std::filesystem::path
       r.max_rate_hz[std::string(k.str())] = *hz;
     }
   }
-  if (const toml::node* n = remote.find("unpublished")) {
+  const auto type_names = [&](const std::string& key, const char* example, std::vector<std::string>& out) {
+    const toml::node* n = remote.find(key);
+    if (n == nullptr) return;
     const toml::array* a = n->as_array();
-    if (a == nullptr) remote.fail(*n, "unpublished", "must be an array of type names, e.g. [\"LaserScan\"]");
+    if (a == nullptr) remote.fail(*n, key, std::string("must be an array of type names, e.g. [\"") + example + "\"]");
     for (const toml::node& e : *a) {
       const auto name = e.value<std::string>();
-      if (!name) remote.fail(e, "unpublished", "must hold type names (strings)");
-      if (!is_message_type(*name)) remote.fail(e, "unpublished", "no whiteboard type \"" + *name + "\" (schema.def)");
-      r.unpublished.push_back(*name);
+      if (!name) remote.fail(e, key, "must hold type names (strings)");
+      if (!is_message_type(*name)) remote.fail(e, key, "no whiteboard type \"" + *name + "\" (schema.def)");
+      out.push_back(*name);
     }
-  }
+  };
+  type_names("unpublished", "LaserScan", r.unpublished);
+  type_names("accept", "FsmControl", r.accept);
   remote.reject_unknown();
 }
 

@@ -54,4 +54,25 @@ void check_contracts(const FirmwareConfig& config, std::span<const TaskDeclarati
   }
 }
 
+void check_remote_writers(const FirmwareConfig& config, std::span<const TaskDeclaration* const> tasks,
+                          const behaviour::llfsm::Schedule& schedule) {
+  const std::string where = config.positions.at("remote.accept") + ": remote.accept: \"";
+  for (const std::string& type : config.remote.accept) {
+    for (const TaskDeclaration* task : tasks) {
+      const auto& p = task->provides_types;
+      if (std::find(p.begin(), p.end(), type) != p.end()) {
+        throw ConfigError(where + type + "\" is posted by task '" + std::string(task->name) + "' (" + task->location() +
+                          "); a remote writer would be its second writer");
+      }
+    }
+    for (std::size_t i = 0; i < schedule.size(); ++i) {
+      const auto p = schedule.machine(i).provides_types();
+      if (std::find(p.begin(), p.end(), type) != p.end()) {
+        throw ConfigError(where + type + "\" is posted by machine '" + std::string(schedule.machine(i).name()) +
+                          "'; a remote writer would be its second writer");
+      }
+    }
+  }
+}
+
 }  // namespace ringlet::firmware

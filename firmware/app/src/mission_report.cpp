@@ -125,8 +125,9 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
   s.run_hash = run_hash(stack, s);
   if (const RemoteLink* r = stack.remote()) {
     const auto& b = r->bridge_config();
-    s.remote = RemoteSummary{b.robot, static_cast<int>(b.domain.id), b.domain.partition, r->totals(),
-                             r->counts(wb::FsmStatus::kId), r->unacknowledged_frames()};
+    s.remote = RemoteSummary{b.robot,        static_cast<int>(b.domain.id),   b.domain.partition,
+                             r->totals(),    r->counts(wb::FsmStatus::kId), r->unacknowledged_frames(),
+                             r->requests()};
   }
   return s;
 }
@@ -173,6 +174,13 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
                   static_cast<unsigned long long>(r.fsm_status.sent), static_cast<unsigned long long>(r.totals.missed),
                   static_cast<unsigned long long>(r.totals.rate_skipped), static_cast<unsigned long long>(r.totals.failed));
     out << line;
+    const remote::RequestCounts& q = r.requests;
+    if (q.accepted + q.unauthorized + q.malformed + q.dropped > 0) {
+      std::snprintf(line, sizeof line, "  remote writes: %llu accepted, %llu not allowed, %llu malformed, %llu dropped\n",
+                    static_cast<unsigned long long>(q.accepted), static_cast<unsigned long long>(q.unauthorized),
+                    static_cast<unsigned long long>(q.malformed), static_cast<unsigned long long>(q.dropped));
+      out << line;
+    }
   }
   if (s.dropped_samples > 0) {
     std::snprintf(line, sizeof line, "  trajectory samples dropped (buffer full): %llu\n",
@@ -206,7 +214,12 @@ nlohmann::json remote_json(const MissionSummary& s) {
           {"partition", r.partition},
           {"totals", counts_json(r.totals)},
           {"fsm_status", counts_json(r.fsm_status)},
-          {"unacknowledged_frames", r.unacknowledged_frames}};
+          {"unacknowledged_frames", r.unacknowledged_frames},
+          {"requests",
+           {{"accepted", r.requests.accepted},
+            {"unauthorized", r.requests.unauthorized},
+            {"malformed", r.requests.malformed},
+            {"dropped", r.requests.dropped}}}};
 }
 }  // namespace
 

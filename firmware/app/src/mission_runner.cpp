@@ -111,6 +111,9 @@ RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomi
   auto& exec = stack.executive();
   auto& actuators = stack.robot().actuators();
   RunOutcome outcome;
+  RemoteLink* remote = stack.remote();
+  // Before the watchdog starts: waiting for monitors is not a stalled frame.
+  if (remote != nullptr) remote->begin_run(log);
   const auto wall_start = std::chrono::steady_clock::now();
   {
     hal::MonotonicClock watchdog_clock;  // the watchdog always watches real time
@@ -127,9 +130,8 @@ RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomi
     }
     {
       Narrator narrator(stack, log, duration_s);
-      if (RemoteLink* remote = stack.remote()) remote->begin_run(log);
       outcome.reason = exec.run(stack.frames_for(duration_s));
-      if (RemoteLink* remote = stack.remote()) remote->end_run();
+      if (remote != nullptr) remote->end_run();
     }
     if (watchdog) {
       watchdog->stop();

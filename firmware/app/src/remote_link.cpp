@@ -16,7 +16,8 @@ constexpr std::chrono::milliseconds kFlushTimeout{2000};
 // writer's depth of 256 per instance).
 constexpr std::size_t kFlushEvery = 128;
 
-remote::BridgeConfig make_bridge_config(const FirmwareConfig& config) {
+remote::BridgeConfig make_bridge_config(const FirmwareConfig& config, std::vector<std::string> machines,
+                                        std::ostream& log) {
   const RemoteSettings& r = config.remote;
   remote::BridgeConfig b;
   b.robot = static_cast<std::uint16_t>(r.robot);
@@ -34,19 +35,23 @@ remote::BridgeConfig make_bridge_config(const FirmwareConfig& config) {
       b.types[i].min_period = std::chrono::nanoseconds{static_cast<std::int64_t>(1e9 / it->second)};
     }
     for (const auto& u : r.unpublished) b.types[i].publish = b.types[i].publish && u != name;
+    for (const auto& a : r.accept) b.accept[i] = b.accept[i] || a == name;
   }
+  b.machines = std::move(machines);
+  b.log = &log;
   return b;
 }
 
 }  // namespace
 
-RemoteLink::RemoteLink(const FirmwareConfig& config, const wb::Whiteboard& board, executive::FrameObserver* next)
-    : next_(next),
+RemoteLink::RemoteLink(const FirmwareConfig& config, const wb::Whiteboard& board, std::vector<std::string> machines,
+                       std::ostream& log)
+    : accepts_(!config.remote.accept.empty()),
       lockstep_(config.clock == ClockMode::kLockstep),
       wait_for_monitors_(config.remote.wait_for_monitors),
       wait_timeout_s_(config.remote.wait_timeout_s) {
   try {
-    bridge_ = std::make_unique<remote::Bridge>(board, make_bridge_config(config));
+    bridge_ = std::make_unique<remote::Bridge>(board, make_bridge_config(config, std::move(machines), log));
   } catch (const remote::RemoteError& e) {
     throw ConfigError(config.positions.at("remote") + ": remote: " + e.what());
   }

@@ -1,6 +1,7 @@
 #include "ringlet/firmware/stack.hpp"
 
 #include <cmath>
+#include <iostream>
 
 #include "ringlet/firmware/backend_factory.hpp"
 #include "ringlet/firmware/contract_check.hpp"
@@ -103,13 +104,20 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& r
   for (const RegisteredTask* t : table) declarations.push_back(t->declaration);
   check_contracts(config_, declarations, schedule_);
 
+  if (config_.remote.enabled) {
+    check_remote_writers(config_, declarations, schedule_);
+    std::vector<std::string> machines;
+    for (std::size_t i = 0; i < schedule_.size(); ++i) machines.emplace_back(schedule_.machine(i).name());
+    remote_ = std::make_unique<RemoteLink>(config_, board_, std::move(machines), std::cerr);
+  }
   board_.subscribe<wb::FsmStatus>([this](const wb::FsmStatus& status) {
     ++fsm_status_seen_;
     (void)fsm_status_log_->push(status);
   });
   hal::Robot& robot = this->robot();
   hal::Camera* camera = owned_camera_ ? owned_camera_.get() : robot.camera();
-  TaskServices services{config_, robot, camera, board_, schedule_, telemetry_, executive_view_, message_log_.get()};
+  TaskServices services{config_,         robot,           camera, board_, schedule_, telemetry_, executive_view_,
+                        message_log_.get(), remote_ ? remote_->inbox() : nullptr};
   std::vector<executive::TaskBinding> bindings;
   for (std::size_t i = 0; i < table.size(); ++i) {
     tasks_.push_back(table[i]->make(services));
@@ -127,8 +135,8 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& r
     truth_score_.emplace(*truth, board_);
     executive_->set_observer(&*truth_score_);
   }
-  if (config_.remote.enabled) {
-    remote_ = std::make_unique<RemoteLink>(config_, board_, truth_score_ ? &*truth_score_ : nullptr);
+  if (remote_) {
+    remote_->set_next(truth_score_ ? &*truth_score_ : nullptr);
     executive_->set_observer(remote_.get());
   }
 }

@@ -7,11 +7,13 @@
 namespace ringlet::firmware {
 
 std::unique_ptr<executive::Task> WhiteboardTask::make(TaskServices& services) {
-  return std::make_unique<WhiteboardTask>(services.board, services.executive, services.message_log);
+  return std::make_unique<WhiteboardTask>(services.board, services.executive, services.message_log,
+                                          services.remote_inbox);
 }
 
 void WhiteboardTask::run(const executive::TaskContext& ctx) noexcept {
   if (log_ != nullptr) log_->set_frame(ctx.frame);
+  if (inbox_ != nullptr) (void)inbox_->deliver(board_);
   board_.dispatch();
   const auto per_second = static_cast<std::uint64_t>(std::chrono::seconds{1} / ctx.period);
   if (executive_ == nullptr || per_second == 0 || ctx.frame % per_second != 0) return;

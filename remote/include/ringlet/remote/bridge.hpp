@@ -10,6 +10,14 @@
 // Everything DDS needs (participant, topics, writers) is created in the constructor; the thread
 // only reads, converts into a sample on its own stack and writes.
 //
+// Remote writes (off by default): a monitor writes a request to the robot's request topic
+// (topics.hpp, request_topic_name) with the robot's id in it. The bridge takes the requests
+// addressed to its robot at every pump, refuses types not on the allow-list (unauthorized) and
+// samples that do not validate (malformed: from_sample, and the type's own check, e.g. an
+// FsmControl must name a machine that exists), and queues the rest in the Inbox, which the cycle
+// empties onto the whiteboard at one defined point. Refusals are counted and described on `log`;
+// nothing of a refused request reaches the whiteboard.
+//
 // Lockstep runs: the executive may call flush() at a frame boundary to wait until every reliable
 // sample has been acknowledged by the monitors that are listening, so a monitor of a simulated run
 // loses nothing however fast the simulation runs (remote/README.md, "Pacing").
@@ -17,9 +25,13 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <ostream>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "ringlet/remote/domain.hpp"
+#include "ringlet/remote/inbox.hpp"
 #include "ringlet/whiteboard/whiteboard.hpp"
 
 namespace ringlet::remote {
@@ -34,6 +46,26 @@ struct BridgeConfig {
   DomainConfig domain{};
   std::chrono::milliseconds poll_period{2};
   std::array<TypeRate, wb::kTypeCount> types{};  // by position in wb::kTypes
+  // Remote writes: off unless a type is on this allow-list (by position in wb::kTypes).
+  std::array<bool, wb::kTypeCount> accept{};
+  std::vector<std::string> machines;  // the names an FsmControl may address (empty: any name)
+  std::size_t inbox_capacity = 16;    // accepted requests waiting for the cycle, per type
+  std::ostream* log = nullptr;        // refusals are described here (the first 20, then every 100th)
+};
+
+/// What became of the requests addressed to this robot (requests to other robots are not seen).
+struct RequestCounts {
+  std::uint64_t accepted = 0;      // validated and queued for the cycle
+  std::uint64_t unauthorized = 0;  // a type not on the allow-list
+  std::uint64_t malformed = 0;     // a value without whiteboard meaning, or refused by the type's check
+  std::uint64_t dropped = 0;       // accepted, but the type's queue was full
+  RequestCounts& operator+=(const RequestCounts& o) noexcept {
+    accepted += o.accepted;
+    unauthorized += o.unauthorized;
+    malformed += o.malformed;
+    dropped += o.dropped;
+    return *this;
+  }
 };
 
 struct TypeCounts {
@@ -80,6 +112,10 @@ class Bridge {
 
   [[nodiscard]] TypeCounts counts(wb::TypeId type) const noexcept;
   [[nodiscard]] TypeCounts totals() const noexcept;
+  [[nodiscard]] RequestCounts requests(wb::TypeId type) const noexcept;
+  [[nodiscard]] RequestCounts request_totals() const noexcept;
+  /// The accepted remote writes, for the cycle to deliver (Inbox::deliver) at its defined point.
+  [[nodiscard]] Inbox& inbox() noexcept { return inbox_; }
   [[nodiscard]] const BridgeConfig& config() const noexcept { return config_; }
   [[nodiscard]] Participant& participant() noexcept { return participant_; }
 
@@ -92,17 +128,27 @@ class Bridge {
     std::atomic<std::uint64_t> missed{0};
     std::atomic<std::uint64_t> rate_skipped{0};
     std::atomic<std::uint64_t> failed{0};
+    dds_entity_t request_reader = 0;
+    std::atomic<std::uint64_t> accepted{0};
+    std::atomic<std::uint64_t> unauthorized{0};
+    std::atomic<std::uint64_t> malformed{0};
+    std::atomic<std::uint64_t> dropped{0};
   };
   template <wb::Message T>
   std::size_t pump_type(std::chrono::steady_clock::time_point now) noexcept;
   template <wb::Message T>
   bool write(Slot& slot, const T& msg, std::uint64_t generation) noexcept;
+  template <wb::Message T>
+  void take_requests() noexcept;
+  void refuse(std::string_view type, std::uint64_t request, const std::string& why) noexcept;
   [[nodiscard]] std::uint32_t matched(std::size_t index) const noexcept;
 
   const wb::Whiteboard& board_;
   BridgeConfig config_;
   Participant participant_;
   std::array<Slot, wb::kTypeCount> slots_{};
+  Inbox inbox_;
+  std::uint64_t refusals_ = 0;
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

@@ -87,6 +87,23 @@ class Participant {
     if (t == 0) t = create_topic(DdsType<T>::descriptor(), topic_name(T::kName), T::kId);
     return t;
   }
+  /// The request topic of T (remote writes to a robot: request_topic_name), and its writer (a
+  /// monitor) and reader (the robot's bridge): reliable, volatile, every request kept.
+  template <wb::Message T>
+  [[nodiscard]] dds_entity_t request_topic() {
+    dds_entity_t& t = request_topics_[wb::kIndexOf<T>];
+    if (t == 0) t = create_topic(DdsType<T>::descriptor(), request_topic_name(T::kName), T::kId);
+    return t;
+  }
+  template <wb::Message T>
+  [[nodiscard]] dds_entity_t request_writer() {
+    return create_request_entity(request_topic<T>(), true);
+  }
+  template <wb::Message T>
+  [[nodiscard]] dds_entity_t request_reader() {
+    return create_request_entity(request_topic<T>(), false);
+  }
+
   /// A writer / reader of T with T's QoS.
   template <wb::Message T>
   [[nodiscard]] dds_entity_t writer() {
@@ -104,12 +121,14 @@ class Participant {
   dds_entity_t create_topic(const dds_topic_descriptor_t* descriptor, const std::string& name, wb::TypeId id);
   dds_entity_t create_writer(dds_entity_t topic, wb::TypeId id);
   dds_entity_t create_reader(dds_entity_t topic, wb::TypeId id, bool keep_all);
+  dds_entity_t create_request_entity(dds_entity_t topic, bool writer);
 
   DomainConfig config_;
   dds_entity_t participant_ = 0;
   dds_entity_t publisher_ = 0;
   dds_entity_t subscriber_ = 0;
   std::array<dds_entity_t, wb::kTypeCount> topics_{};
+  std::array<dds_entity_t, wb::kTypeCount> request_topics_{};
 };
 
 /// Throws RemoteError("what: reason") when rc is negative; returns rc otherwise.

@@ -40,6 +40,9 @@ struct DdsType;
 
 /// "rt/ringlet/fsm_status" for "FsmStatus".
 [[nodiscard]] std::string topic_name(std::string_view type_name);
+/// "rt/ringlet/request/fsm_control" for "FsmControl": where monitors write requests to robots
+/// (the sample's robot field names the robot asked).
+[[nodiscard]] std::string request_topic_name(std::string_view type_name);
 
 namespace detail {
 

@@ -113,6 +113,7 @@ struct RemoteSettings {
   double wait_timeout_s = 10.0;         // ... or after this long (then run anyway, with a warning)
   std::map<std::string, double, std::less<>> max_rate_hz;  // type name -> most samples per second
   std::vector<std::string> unpublished;                    // type names kept off the network
+  std::vector<std::string> accept;  // types a monitor may write (remote writes); empty: none
 };
 
 /// Where each key of the file was written, so that problems found after parsing (binding the

@@ -16,4 +16,10 @@ namespace ringlet::firmware {
 void check_contracts(const FirmwareConfig& config, std::span<const TaskDeclaration* const> tasks,
                      const behaviour::llfsm::Schedule& schedule);
 
+/// [remote] accept: a type a monitor may write must have no writer in the controller (a whiteboard
+/// type has one writer; remote writes are posted by the whiteboard task). Throws ConfigError at
+/// remote.accept naming the task (its declaration's file:line) or machine that posts it.
+void check_remote_writers(const FirmwareConfig& config, std::span<const TaskDeclaration* const> tasks,
+                          const behaviour::llfsm::Schedule& schedule);
+
 }  // namespace ringlet::firmware

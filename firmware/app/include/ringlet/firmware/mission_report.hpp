@@ -37,6 +37,7 @@ struct RemoteSummary {
   remote::TypeCounts totals{};
   remote::TypeCounts fsm_status{};
   std::uint64_t unacknowledged_frames = 0;  // lockstep frames the monitors did not acknowledge in time
+  remote::RequestCounts requests{};         // remote writes: accepted, unauthorized, malformed, dropped
 };
 
 struct MissionSummary {

@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <memory>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "ringlet/executive/executive.hpp"
 #include "ringlet/firmware/config.hpp"
@@ -21,9 +23,15 @@ namespace ringlet::firmware {
 
 class RemoteLink final : public executive::FrameObserver {
  public:
-  /// Joins the DDS domain (throws ConfigError naming [remote] and DDS's reason). `next` (or null)
-  /// is the observer that was there before: it sees every frame first.
-  RemoteLink(const FirmwareConfig& config, const wb::Whiteboard& board, executive::FrameObserver* next);
+  /// Joins the DDS domain (throws ConfigError naming [remote] and DDS's reason). `machines`: the
+  /// names a remote FsmControl may address. Refusals of remote writes are described on `log`.
+  RemoteLink(const FirmwareConfig& config, const wb::Whiteboard& board, std::vector<std::string> machines,
+             std::ostream& log);
+  /// The observer that was there before (or null): it sees every frame first.
+  void set_next(executive::FrameObserver* next) noexcept { next_ = next; }
+  /// The remote writes accepted, for the whiteboard task to deliver; null when none are allowed.
+  [[nodiscard]] remote::Inbox* inbox() noexcept { return accepts_ ? &bridge_->inbox() : nullptr; }
+  [[nodiscard]] remote::RequestCounts requests() const noexcept { return bridge_->request_totals(); }
   ~RemoteLink() override;
 
   /// Before the first frame: waits for wait_for_monitors monitors (warning on `log` if they do not
@@ -42,7 +50,8 @@ class RemoteLink final : public executive::FrameObserver {
 
  private:
   std::unique_ptr<remote::Bridge> bridge_;
-  executive::FrameObserver* next_;
+  executive::FrameObserver* next_ = nullptr;
+  bool accepts_;
   bool lockstep_;
   int wait_for_monitors_;
   double wait_timeout_s_;

@@ -9,6 +9,7 @@
 #include "ringlet/firmware/config.hpp"
 #include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/hal/robot.hpp"
+#include "ringlet/remote/inbox.hpp"
 #include "ringlet/whiteboard/message_log.hpp"
 #include "ringlet/whiteboard/whiteboard.hpp"
 
@@ -29,6 +30,9 @@ struct TaskServices {
   const executive::Executive* const& executive;
   /// --wb-log: told the frame before each dispatch (null when not logging).
   wb::MessageLogger* message_log;
+  /// [remote] accept: the remote writes the bridge accepted, delivered by the whiteboard task before
+  /// its dispatch (null when nothing remote may write).
+  remote::Inbox* remote_inbox = nullptr;
 };
 
 }  // namespace ringlet::firmware
