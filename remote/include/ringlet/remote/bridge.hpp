@@ -44,7 +44,7 @@ struct TypeRate {
 struct BridgeConfig {
   std::uint16_t robot = 0;
   DomainConfig domain{};
-  std::chrono::milliseconds poll_period{2};
+  std::chrono::microseconds poll_period{2000};
   std::array<TypeRate, wb::kTypeCount> types{};  // by position in wb::kTypes
   // Remote writes: off unless a type is on this allow-list (by position in wb::kTypes).
   std::array<bool, wb::kTypeCount> accept{};
