@@ -64,13 +64,17 @@ void Bridge::stop() noexcept {
   pump();
 }
 
-std::size_t Bridge::pump() noexcept {
-  const auto now = std::chrono::steady_clock::now();
+std::size_t Bridge::pump() noexcept { return pump(std::chrono::steady_clock::now().time_since_epoch()); }
+
+std::size_t Bridge::pump(std::chrono::nanoseconds now) noexcept {
+  const hal::Nanos cpu_start = stopwatch_.cpu_now();
   std::size_t written = 0;
   wb::for_each_type([&]<class T>(std::type_identity<T>) {
     written += pump_type<T>(now);
     take_requests<T>();
   });
+  cpu_ns_.fetch_add((stopwatch_.cpu_now() - cpu_start).count(), std::memory_order_relaxed);
+  pumps_.fetch_add(1, std::memory_order_relaxed);
   return written;
 }
 
@@ -134,7 +138,7 @@ bool Bridge::write(Slot& slot, const T& msg, std::uint64_t generation) noexcept 
 }
 
 template <wb::Message T>
-std::size_t Bridge::pump_type(std::chrono::steady_clock::time_point now) noexcept {
+std::size_t Bridge::pump_type(std::chrono::nanoseconds now) noexcept {
   Slot& slot = slots_[wb::kIndexOf<T>];
   if (slot.writer == 0) return 0;
   const std::uint64_t newest = board_.generation<T>();
@@ -143,7 +147,7 @@ std::size_t Bridge::pump_type(std::chrono::steady_clock::time_point now) noexcep
   std::size_t written = 0;
   if (period.count() > 0) {
     // Rate-limited: the newest generation once per period; the ones before it are skipped.
-    if (slot.last_sent != std::chrono::steady_clock::time_point{} && now - slot.last_sent < period) return 0;
+    if (slot.last_sent && now - *slot.last_sent < period) return 0;
     const wb::ReadResult<T> r = board_.read<T>(newest);
     if (r.ok()) {
       slot.rate_skipped.fetch_add(newest - slot.last - 1, std::memory_order_relaxed);

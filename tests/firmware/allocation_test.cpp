@@ -61,8 +61,13 @@ TEST(NoAllocation, PlannerArbiterAndNavigateAllocateNothing) {
 
 TEST(NoAllocation, CameraAndVisionAllocateNothingEither) {
   // The main job's stack: the sim camera's render thread and the vision task run as well; the
-  // counter sees every thread's allocations.
-  const auto cfg = test::parse_as_shipped(test::shipped_config_text(test::kSplConfig));
+  // counter sees every thread's allocations. Without [remote]: Cyclone DDS's own threads (and the
+  // bridge, which serializes samples) allocate, off the cycle — the bridge reads the whiteboard by
+  // generation, lock-free, on its own thread on the real clock, and after the frame (outside the
+  // task table) in lockstep.
+  const auto cfg = test::parse_as_shipped(
+      test::with_line(test::shipped_config_text(test::kSplConfig), "enabled = true", "enabled = false"));
+  ASSERT_FALSE(cfg.remote.enabled);
   FirmwareStack stack(cfg);
   auto& exec = stack.executive();
   exec.run(30);  // start-up: first frames rendered and processed

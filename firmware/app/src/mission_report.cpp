@@ -1,6 +1,7 @@
 #include "ringlet/firmware/mission_report.hpp"
 
 #include <bit>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 
@@ -127,7 +128,8 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
     const auto& b = r->bridge_config();
     s.remote = RemoteSummary{b.robot,        static_cast<int>(b.domain.id),   b.domain.partition,
                              r->totals(),    r->counts(wb::FsmStatus::kId), r->unacknowledged_frames(),
-                             r->requests()};
+                             r->requests(),  std::chrono::duration<double, std::milli>(r->cpu_time()).count(),
+                             r->pumps()};
   }
   return s;
 }
@@ -215,6 +217,9 @@ nlohmann::json remote_json(const MissionSummary& s) {
           {"totals", counts_json(r.totals)},
           {"fsm_status", counts_json(r.fsm_status)},
           {"unacknowledged_frames", r.unacknowledged_frames},
+          {"cpu_ms", r.cpu_ms},
+          {"cpu_us_per_pump", r.pumps == 0 ? 0.0 : 1e3 * r.cpu_ms / static_cast<double>(r.pumps)},
+          {"pumps", r.pumps},
           {"requests",
            {{"accepted", r.requests.accepted},
             {"unauthorized", r.requests.unauthorized},

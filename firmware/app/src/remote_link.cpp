@@ -91,7 +91,7 @@ void RemoteLink::frame_done(std::uint64_t frame, executive::Nanos frame_start) n
   // Waiting for the acknowledgements after every frame would pace the run on DDS's heartbeats
   // (100 ms); every kFlushEvery samples keeps each instance's unacknowledged samples far below the
   // depth the writer keeps (remote::topic_qos), so nothing is dropped before the monitor has it.
-  written_since_flush_ += bridge_->pump();
+  written_since_flush_ += bridge_->pump(frame_start);  // rate limits on the virtual clock
   if (written_since_flush_ >= kFlushEvery) {
     if (!bridge_->flush(kFlushTimeout)) ++unacknowledged_frames_;
     written_since_flush_ = 0;

@@ -25,11 +25,13 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/remote/domain.hpp"
 #include "ringlet/remote/inbox.hpp"
 #include "ringlet/whiteboard/whiteboard.hpp"
@@ -97,8 +99,11 @@ class Bridge {
   [[nodiscard]] bool running() const noexcept { return thread_.joinable(); }
 
   /// One pass over every published type; returns the samples written. Called by the thread, or
-  /// (without the thread) by a caller that wants to choose when.
+  /// (without the thread) by a caller that wants to choose when. Rate limits are judged on `now`:
+  /// the steady clock by default; a lockstep run passes its virtual frame time, so what a
+  /// rate-limited topic carries is the same on every host.
   std::size_t pump() noexcept;
+  std::size_t pump(std::chrono::nanoseconds now) noexcept;
 
   /// Waits up to `timeout` until every reliable sample written so far is acknowledged by every
   /// matched reader; false on timeout.
@@ -112,6 +117,9 @@ class Bridge {
 
   [[nodiscard]] TypeCounts counts(wb::TypeId type) const noexcept;
   [[nodiscard]] TypeCounts totals() const noexcept;
+  /// CPU time spent in pump() so far (the calling thread's CPU clock), and how many pumps.
+  [[nodiscard]] std::chrono::nanoseconds cpu_time() const noexcept { return std::chrono::nanoseconds{cpu_ns_.load(std::memory_order_relaxed)}; }
+  [[nodiscard]] std::uint64_t pumps() const noexcept { return pumps_.load(std::memory_order_relaxed); }
   [[nodiscard]] RequestCounts requests(wb::TypeId type) const noexcept;
   [[nodiscard]] RequestCounts request_totals() const noexcept;
   /// The accepted remote writes, for the cycle to deliver (Inbox::deliver) at its defined point.
@@ -123,7 +131,7 @@ class Bridge {
   struct Slot {
     dds_entity_t writer = 0;
     std::uint64_t last = 0;  // the newest generation handled (sent, missed or skipped)
-    std::chrono::steady_clock::time_point last_sent{};
+    std::optional<std::chrono::nanoseconds> last_sent;  // when the last sample was written (pump's time line)
     std::atomic<std::uint64_t> sent{0};
     std::atomic<std::uint64_t> missed{0};
     std::atomic<std::uint64_t> rate_skipped{0};
@@ -135,7 +143,7 @@ class Bridge {
     std::atomic<std::uint64_t> dropped{0};
   };
   template <wb::Message T>
-  std::size_t pump_type(std::chrono::steady_clock::time_point now) noexcept;
+  std::size_t pump_type(std::chrono::nanoseconds now) noexcept;
   template <wb::Message T>
   bool write(Slot& slot, const T& msg, std::uint64_t generation) noexcept;
   template <wb::Message T>
@@ -149,6 +157,9 @@ class Bridge {
   std::array<Slot, wb::kTypeCount> slots_{};
   Inbox inbox_;
   std::uint64_t refusals_ = 0;
+  hal::ThreadStopwatch stopwatch_;
+  std::atomic<std::int64_t> cpu_ns_{0};
+  std::atomic<std::uint64_t> pumps_{0};
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };

@@ -38,6 +38,8 @@ struct RemoteSummary {
   remote::TypeCounts fsm_status{};
   std::uint64_t unacknowledged_frames = 0;  // lockstep frames the monitors did not acknowledge in time
   remote::RequestCounts requests{};         // remote writes: accepted, unauthorized, malformed, dropped
+  double cpu_ms = 0.0;                      // the bridge's CPU time (its thread, or the lockstep observer)
+  std::uint64_t pumps = 0;                  // its passes over the whiteboard
 };
 
 struct MissionSummary {

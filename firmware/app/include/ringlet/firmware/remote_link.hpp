@@ -32,6 +32,8 @@ class RemoteLink final : public executive::FrameObserver {
   /// The remote writes accepted, for the whiteboard task to deliver; null when none are allowed.
   [[nodiscard]] remote::Inbox* inbox() noexcept { return accepts_ ? &bridge_->inbox() : nullptr; }
   [[nodiscard]] remote::RequestCounts requests() const noexcept { return bridge_->request_totals(); }
+  [[nodiscard]] std::chrono::nanoseconds cpu_time() const noexcept { return bridge_->cpu_time(); }
+  [[nodiscard]] std::uint64_t pumps() const noexcept { return bridge_->pumps(); }
   ~RemoteLink() override;
 
   /// Before the first frame: waits for wait_for_monitors monitors (warning on `log` if they do not
