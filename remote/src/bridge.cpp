@@ -201,23 +201,24 @@ std::uint32_t Bridge::matched(std::size_t index) const noexcept {
 }
 
 TypeCounts Bridge::counts(wb::TypeId type) const noexcept {
+  const Slot* s = slot_of(type);
+  if (s == nullptr) return {};
+  return {s->sent.load(std::memory_order_relaxed), s->missed.load(std::memory_order_relaxed),
+          s->rate_skipped.load(std::memory_order_relaxed), s->failed.load(std::memory_order_relaxed)};
+}
+
+const Bridge::Slot* Bridge::slot_of(wb::TypeId type) const noexcept {
   for (std::size_t i = 0; i < wb::kTypeCount; ++i) {
-    if (wb::kTypes[i].id != type) continue;
-    const Slot& s = slots_[i];
-    return {s.sent.load(std::memory_order_relaxed), s.missed.load(std::memory_order_relaxed),
-            s.rate_skipped.load(std::memory_order_relaxed), s.failed.load(std::memory_order_relaxed)};
+    if (wb::kTypes[i].id == type) return &slots_[i];
   }
-  return {};
+  return nullptr;
 }
 
 RequestCounts Bridge::requests(wb::TypeId type) const noexcept {
-  for (std::size_t i = 0; i < wb::kTypeCount; ++i) {
-    if (wb::kTypes[i].id != type) continue;
-    const Slot& s = slots_[i];
-    return {s.accepted.load(std::memory_order_relaxed), s.unauthorized.load(std::memory_order_relaxed),
-            s.malformed.load(std::memory_order_relaxed), s.dropped.load(std::memory_order_relaxed)};
-  }
-  return {};
+  const Slot* s = slot_of(type);
+  if (s == nullptr) return {};
+  return {s->accepted.load(std::memory_order_relaxed), s->unauthorized.load(std::memory_order_relaxed),
+          s->malformed.load(std::memory_order_relaxed), s->dropped.load(std::memory_order_relaxed)};
 }
 
 RequestCounts Bridge::request_totals() const noexcept {

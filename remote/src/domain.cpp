@@ -137,8 +137,7 @@ void Participant::release() noexcept {
   }
 }
 
-dds_entity_t Participant::create_topic(const dds_topic_descriptor_t* descriptor, const std::string& name,
-                                       wb::TypeId /*id*/) {
+dds_entity_t Participant::create_topic(const dds_topic_descriptor_t* descriptor, const std::string& name) {
   return check(dds_create_topic(participant_, descriptor, name.c_str(), nullptr, nullptr),
                "creating topic " + name + " in " + where(config_));
 }

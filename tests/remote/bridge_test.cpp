@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "remote_test_support.hpp"
 #include "ringlet/remote/bridge.hpp"
 
 namespace ringlet::remote {
@@ -19,21 +20,8 @@ namespace {
 
 using namespace std::chrono_literals;
 
-// A partition of this test's own: tests run side by side in one domain never see each other.
-DomainConfig test_domain() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return {0, std::string("ringlet-test-") + std::to_string(::getpid()) + "-" + info->name(), ""};
-}
-
-template <class Pred>
-bool eventually(Pred pred, std::chrono::milliseconds timeout = 10s) {
-  const auto end = std::chrono::steady_clock::now() + timeout;
-  while (std::chrono::steady_clock::now() < end) {
-    if (pred()) return true;
-    std::this_thread::sleep_for(2ms);
-  }
-  return pred();
-}
+using test::eventually;
+using test::test_domain;
 
 // Takes what the reader holds, appending to `out`.
 template <wb::Message T>

@@ -13,6 +13,7 @@
 #include <string>
 #include <thread>
 
+#include "remote_test_support.hpp"
 #include "ringlet/remote/bridge.hpp"
 
 namespace ringlet::remote {
@@ -20,20 +21,8 @@ namespace {
 
 using namespace std::chrono_literals;
 
-DomainConfig test_domain() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return {0, std::string("ringlet-test-") + std::to_string(::getpid()) + "-" + info->name(), ""};
-}
-
-template <class Pred>
-bool eventually(Pred pred, std::chrono::milliseconds timeout = 10s) {
-  const auto end = std::chrono::steady_clock::now() + timeout;
-  while (std::chrono::steady_clock::now() < end) {
-    if (pred()) return true;
-    std::this_thread::sleep_for(2ms);
-  }
-  return pred();
-}
+using test::eventually;
+using test::test_domain;
 
 // A robot (id 7) that accepts FsmControl for its two machines, and a monitor that writes requests.
 struct RobotAndMonitor {
@@ -51,10 +40,7 @@ struct RobotAndMonitor {
   template <wb::Message T>
   void request(const typename DdsType<T>::Sample& sample, std::uint64_t handled) {
     const dds_entity_t w = monitor.request_writer<T>();
-    ASSERT_TRUE(eventually([&] {
-      dds_publication_matched_status_t st{};
-      return dds_get_publication_matched_status(w, &st) == 0 && st.current_count >= 1;
-    }));
+    ASSERT_TRUE(test::reader_matched(w));
     ASSERT_EQ(dds_write(w, &sample), DDS_RETCODE_OK);
     ASSERT_TRUE(eventually([&] {
       bridge.pump();
@@ -120,10 +106,7 @@ TEST(RemoteRequests, RequestsForAnotherRobotAreNotThisRobotsBusiness) {
   std::ostringstream log;
   RobotAndMonitor s(log);
   const dds_entity_t w = s.monitor.request_writer<wb::FsmControl>();
-  ASSERT_TRUE(eventually([&] {
-    dds_publication_matched_status_t st{};
-    return dds_get_publication_matched_status(w, &st) == 0 && st.current_count >= 1;
-  }));
+  ASSERT_TRUE(test::reader_matched(w));
   const auto other = control(8, "Mission", wb::kSuspend);
   const auto mine = control(7, "Safety", wb::kResume);
   ASSERT_EQ(dds_write(w, &other), DDS_RETCODE_OK);

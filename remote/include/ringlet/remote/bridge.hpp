@@ -150,6 +150,7 @@ class Bridge {
   void take_requests() noexcept;
   void refuse(std::string_view type, std::uint64_t request, const std::string& why) noexcept;
   [[nodiscard]] std::uint32_t matched(std::size_t index) const noexcept;
+  [[nodiscard]] const Slot* slot_of(wb::TypeId type) const noexcept;
 
   const wb::Whiteboard& board_;
   BridgeConfig config_;

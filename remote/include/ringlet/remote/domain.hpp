@@ -84,7 +84,7 @@ class Participant {
   template <wb::Message T>
   [[nodiscard]] dds_entity_t topic() {
     dds_entity_t& t = topics_[wb::kIndexOf<T>];
-    if (t == 0) t = create_topic(DdsType<T>::descriptor(), topic_name(T::kName), T::kId);
+    if (t == 0) t = create_topic(DdsType<T>::descriptor(), topic_name(T::kName));
     return t;
   }
   /// The request topic of T (remote writes to a robot: request_topic_name), and its writer (a
@@ -92,7 +92,7 @@ class Participant {
   template <wb::Message T>
   [[nodiscard]] dds_entity_t request_topic() {
     dds_entity_t& t = request_topics_[wb::kIndexOf<T>];
-    if (t == 0) t = create_topic(DdsType<T>::descriptor(), request_topic_name(T::kName), T::kId);
+    if (t == 0) t = create_topic(DdsType<T>::descriptor(), request_topic_name(T::kName));
     return t;
   }
   template <wb::Message T>
@@ -118,7 +118,7 @@ class Participant {
 
  private:
   void release() noexcept;  // the participant, and the domain with its last participant
-  dds_entity_t create_topic(const dds_topic_descriptor_t* descriptor, const std::string& name, wb::TypeId id);
+  dds_entity_t create_topic(const dds_topic_descriptor_t* descriptor, const std::string& name);
   dds_entity_t create_writer(dds_entity_t topic, wb::TypeId id);
   dds_entity_t create_reader(dds_entity_t topic, wb::TypeId id, bool keep_all);
   dds_entity_t create_request_entity(dds_entity_t topic, bool writer);
