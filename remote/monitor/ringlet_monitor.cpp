@@ -6,48 +6,30 @@
 //   ringlet-monitor --robot N control MACHINE suspend|resume|restart
 //                                        asks robot N (its [remote] accept lists FsmControl) and
 //                                        waits until its FsmStatus shows the effect
+//   ringlet-monitor serve [--port 8080]  the live page in a browser (field, machines, timing)
+//   ringlet-monitor record FILE          every sample heard, as JSON lines (remote/README.md)
+//   ringlet-monitor replay FILE          publishes a recording again, as the robots did
+//   ringlet-monitor --plotjuggler HOST:PORT   every sample as JSON over UDP to PlotJuggler
 //
 // Exit codes: 0 done · 1 nothing heard (no robot found: the message names the domain, partition
 // and network) · 2 bad input (flags, type name, configuration file) or DDS refused to start.
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <map>
-#include <optional>
 #include <string>
 #include <thread>
 #include <tuple>
-#include <vector>
 
-#include "ringlet/hal/read_file.hpp"
-#include "ringlet/remote/domain.hpp"
-#include "ringlet/whiteboard/messages.hpp"
+#include "monitor_common.hpp"
 
-namespace {
-
-using namespace ringlet;
-using Clock = std::chrono::steady_clock;
+namespace ringlet::monitor {
 
 std::atomic<bool> g_stop{false};
-extern "C" void on_signal(int) { g_stop.store(true); }
-
-struct Options {
-  int domain = 0;
-  std::string partition = "ringlet";
-  std::string config;  // Cyclone DDS XML file
-  double wait_s = 2.0;
-  std::optional<int> robot;
-  bool json = false;
-  long count = 0;  // echo: stop after this many (0: until interrupted or --wait ends)
-  bool once = false;
-  std::string type;
-};
 
 std::string network_text(const Options& o) {
   return "DDS domain " + std::to_string(o.domain) + ", partition \"" + o.partition + "\", " +
@@ -65,77 +47,30 @@ remote::DomainConfig domain_of(const Options& o) {
   return d;
 }
 
-// ---- samples as JSON ---------------------------------------------------------------------------
-template <class V>
-nlohmann::json to_json(const V& v) {
-  if constexpr (wb::SchemaEnum<V>) {
-    for (const auto& e : wb::EnumTraits<V>::kEntries) {
-      if (e.value == v) return std::string(e.text);
-    }
-    return static_cast<long long>(v);
-  } else if constexpr (std::is_same_v<V, bool> || std::is_arithmetic_v<V>) {
-    return v;
-  } else if constexpr (requires { v.view(); }) {
-    return std::string(v.view());
-  } else {
-    nlohmann::json a = nlohmann::json::array();
-    for (const auto& e : v) a.push_back(to_json(e));
-    return a;
-  }
-}
+}  // namespace ringlet::monitor
 
-template <wb::Message T>
-nlohmann::json message_json(const T& m, std::uint16_t robot, std::uint64_t generation) {
-  nlohmann::json fields = nlohmann::json::object();
-  visit_fields(m, [&](std::string_view name, const auto& value) { fields[std::string(name)] = to_json(value); });
-  return {{"type", std::string(T::kName)}, {"robot", robot}, {"generation", generation}, {"fields", fields}};
-}
+namespace {
 
-// Takes everything the reader holds; calls f(robot, generation, message) for each valid sample
-// (samples that do not validate are counted and skipped).
-template <wb::Message T, class F>
-void take_all(dds_entity_t reader, std::uint64_t& invalid, F&& f) {
-  constexpr int kBatch = 32;
-  static std::vector<typename remote::DdsType<T>::Sample> buf(kBatch);
-  void* ptrs[kBatch];
-  dds_sample_info_t infos[kBatch];
-  for (int i = 0; i < kBatch; ++i) ptrs[i] = &buf[static_cast<std::size_t>(i)];
-  for (dds_return_t n = kBatch; n == kBatch;) {
-    n = dds_take(reader, ptrs, infos, kBatch, kBatch);
-    for (dds_return_t i = 0; i < n; ++i) {
-      if (!infos[i].valid_data) continue;
-      const auto& s = buf[static_cast<std::size_t>(i)];
-      T m;
-      if (!remote::from_sample(s, m)) {
-        ++invalid;
-        continue;
-      }
-      f(s.robot, s.generation, m);
-    }
-  }
-}
+using namespace ringlet;
+using namespace ringlet::monitor;
+
+extern "C" void on_signal(int) { g_stop.store(true); }
 
 // ---- commands ----------------------------------------------------------------------------------
 int list(const Options& o) {
-  remote::Participant p(domain_of(o));
-  std::array<dds_entity_t, wb::kTypeCount> readers{};
-  wb::for_each_type([&]<class T>(std::type_identity<T>) { readers[wb::kIndexOf<T>] = p.reader<T>(true); });
+  Tap tap(o);
   struct Seen {
     std::uint64_t samples = 0;
     std::uint64_t first = 0, last = 0;  // generations
   };
   std::map<std::pair<int, std::string_view>, Seen> seen;
-  std::uint64_t invalid = 0;
   const auto start = Clock::now();
   while (!g_stop.load() && Clock::now() - start < std::chrono::duration<double>(o.wait_s)) {
-    wb::for_each_type([&]<class T>(std::type_identity<T>) {
-      take_all<T>(readers[wb::kIndexOf<T>], invalid, [&](std::uint16_t robot, std::uint64_t gen, const T&) {
-        if (o.robot && *o.robot != robot) return;
-        Seen& s = seen[{robot, T::kName}];
-        if (s.samples == 0) s.first = gen;
-        ++s.samples;
-        s.last = gen;
-      });
+    tap.poll([&]<class T>(std::uint16_t robot, std::uint64_t gen, const T&) {
+      Seen& s = seen[{robot, T::kName}];
+      if (s.samples == 0) s.first = gen;
+      ++s.samples;
+      s.last = gen;
     });
     std::this_thread::sleep_for(std::chrono::milliseconds{5});
   }
@@ -152,7 +87,7 @@ int list(const Options& o) {
                 static_cast<unsigned long long>(s.samples), static_cast<unsigned long long>(s.last),
                 static_cast<double>(s.samples) / secs);
   }
-  if (invalid > 0) std::printf("(%llu samples refused: values without whiteboard meaning)\n", static_cast<unsigned long long>(invalid));
+  if (tap.invalid() > 0) std::printf("(%llu samples refused: values without whiteboard meaning)\n", static_cast<unsigned long long>(tap.invalid()));
   return 0;
 }
 
@@ -319,7 +254,12 @@ int main(int argc, char** argv) {
   app.add_option("--config", o.config, "Cyclone DDS XML file for a real network (default: loopback only)")
       ->check(CLI::ExistingFile);
   app.add_option("--robot", o.robot, "only this robot id")->check(CLI::Range(0, 65535));
-  app.require_subcommand(1);
+  std::string plotjuggler_target;
+  app.add_option("--plotjuggler", plotjuggler_target,
+                 "stream every sample as JSON over UDP to PlotJuggler's UDP server (HOST:PORT), until Ctrl-C or --wait");
+  double stream_wait = 0.0;
+  app.add_option("--wait", stream_wait, "with --plotjuggler alone: stop after this many seconds")->check(CLI::Range(0.1, 86400.0));
+  app.require_subcommand(0, 1);
 
   auto* list_cmd = app.add_subcommand("list", "robots, types and rates heard during --wait seconds");
   list_cmd->add_option("--wait", o.wait_s, "seconds to listen")->check(CLI::Range(0.1, 3600.0))->capture_default_str();
@@ -341,14 +281,47 @@ int main(int argc, char** argv) {
   control_cmd->add_option("command", control_command, "suspend, resume or restart")->required();
   control_cmd->add_option("--wait", o.wait_s, "seconds to wait for the robot and the effect")->check(CLI::Range(0.1, 3600.0));
 
+  auto* serve_cmd = app.add_subcommand("serve", "the live page: field, pose, plan, machines and timing of every robot, in a browser");
+  ServeOptions serve_options;
+  serve_cmd->add_option("--port", serve_options.port, "TCP port (0: any free one, printed)")->check(CLI::Range(0, 65535))->capture_default_str();
+  serve_cmd->add_option("--bind", serve_options.bind, "address to listen on (0.0.0.0: every interface)")->capture_default_str();
+
+  auto* record_cmd = app.add_subcommand("record", "write every sample heard to FILE as JSON lines (Ctrl-C, --wait or --count ends)");
+  std::string record_file;
+  record_cmd->add_option("file", record_file, "where to write (replaced)")->required();
+  record_cmd->add_option("--wait", o.wait_s, "stop after this many seconds")->check(CLI::Range(0.1, 86400.0));
+  record_cmd->add_option("-n,--count", o.count, "stop after this many samples")->check(CLI::Range(0L, 1000000000L));
+
+  auto* replay_cmd = app.add_subcommand("replay", "publish a recording again, as the robots did (for serve, fsm, echo or other DDS tools)");
+  std::string replay_file;
+  double replay_speed = 1.0;
+  replay_cmd->add_option("file", replay_file, "a file written by record")->required()->check(CLI::ExistingFile);
+  replay_cmd->add_option("--wait", o.wait_s, "most seconds to wait for a monitor (a reader of FsmStatus) before publishing")->check(CLI::Range(0.0, 3600.0));
+  replay_cmd->add_option("--speed", replay_speed, "times the recorded pace (0: as fast as possible)")->check(CLI::Range(0.0, 1000.0))->capture_default_str();
+
   try {
     app.parse(argc, argv);
+    if (app.get_subcommands().empty() && plotjuggler_target.empty()) {
+      throw CLI::RequiredError("A command (list, echo, fsm, control, serve, record, replay) or --plotjuggler");
+    }
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   try {
+    if (!plotjuggler_target.empty() && app.get_subcommands().empty()) {
+      if (stream_wait > 0.0) o.wait_s = stream_wait;
+      return plotjuggler(o, plotjuggler_target, stream_wait > 0.0);
+    }
+    if (!plotjuggler_target.empty()) {
+      std::cerr << "ringlet-monitor: --plotjuggler streams on its own; run it beside " << app.get_subcommands()[0]->get_name()
+                << " as a second ringlet-monitor\n";
+      return 2;
+    }
+    if (serve_cmd->parsed()) return serve(o, serve_options);
+    if (record_cmd->parsed()) return record(o, record_file, record_cmd->count("--wait") > 0);
+    if (replay_cmd->parsed()) return replay(o, replay_file, replay_speed);
     if (list_cmd->parsed()) return list(o);
     if (fsm_cmd->parsed()) return fsm(o);
     if (control_cmd->parsed()) return control(o, control_machine, control_command);

@@ -27,13 +27,20 @@ std::string check_request(const wb::MissionGoals& g, const BridgeConfig& /*confi
   return {};
 }
 
+// The inbox carries the accepted remote writes and, when the bridge posts it, its own health.
+std::array<bool, wb::kTypeCount> inbox_types(const BridgeConfig& config) {
+  std::array<bool, wb::kTypeCount> types = config.accept;
+  if (config.health_period.count() > 0) types[wb::kIndexOf<wb::BridgeHealth>] = true;
+  return types;
+}
+
 }  // namespace
 
 Bridge::Bridge(const wb::Whiteboard& board, BridgeConfig config)
     : board_(board),
       config_(std::move(config)),
       participant_(config_.domain),
-      inbox_(config_.accept, config_.inbox_capacity) {
+      inbox_(inbox_types(config_), config_.inbox_capacity) {
   const bool remote_writes = std::any_of(config_.accept.begin(), config_.accept.end(), [](bool a) { return a; });
   wb::for_each_type([&]<class T>(std::type_identity<T>) {
     constexpr std::size_t i = wb::kIndexOf<T>;
@@ -73,6 +80,7 @@ std::size_t Bridge::pump(std::chrono::nanoseconds now) noexcept {
     written += pump_type<T>(now);
     take_requests<T>();
   });
+  post_health(now);
   cpu_ns_.fetch_add((stopwatch_.cpu_now() - cpu_start).count(), std::memory_order_relaxed);
   pumps_.fetch_add(1, std::memory_order_relaxed);
   return written;
@@ -116,6 +124,23 @@ void Bridge::take_requests() noexcept {
       }
     }
   }
+}
+
+void Bridge::post_health(std::chrono::nanoseconds now) noexcept {
+  if (config_.health_period.count() <= 0 || (last_health_ && now - *last_health_ < config_.health_period)) return;
+  last_health_ = now;
+  const TypeCounts c = totals();
+  const RequestCounts r = request_totals();
+  wb::BridgeHealth h;
+  h.sent = c.sent;
+  h.missed = c.missed;
+  h.rate_skipped = c.rate_skipped;
+  h.failed = c.failed;
+  h.requests_accepted = r.accepted;
+  h.requests_refused = r.unauthorized + r.malformed + r.dropped;
+  h.monitors = matched(wb::kIndexOf<wb::FsmStatus>);
+  h.pumps = pumps_.load(std::memory_order_relaxed);
+  (void)inbox_.push(h);  // a full queue (nobody delivering) drops it; the next one says the same, newer
 }
 
 void Bridge::refuse(std::string_view type, std::uint64_t request, const std::string& why) noexcept {

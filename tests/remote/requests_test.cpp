@@ -34,6 +34,7 @@ struct RobotAndMonitor {
     c.accept[wb::kIndexOf<wb::FsmControl>] = true;
     c.machines = {"Mission", "Safety"};
     c.log = &log;
+    c.health_period = 0ns;  // these tests count the requests the inbox delivers (health: its own test)
     return c;
   }
   // Writes `sample` as a request and pumps the bridge until it has handled `handled` requests.
@@ -119,6 +120,34 @@ TEST(RemoteRequests, RequestsForAnotherRobotAreNotThisRobotsBusiness) {
   EXPECT_EQ(s.board.get<wb::FsmControl>().machine.view(), "Safety");
   const RequestCounts c = s.bridge.request_totals();
   EXPECT_EQ(c.unauthorized + c.malformed + c.dropped, 0U);
+}
+
+// The bridge's health reaches the whiteboard the way remote writes do: through the inbox, when the
+// cycle delivers it; once per health period on the time line pump is given, whatever the pumps.
+TEST(RemoteBridgeHealth, GoesOnTheWhiteboardThroughTheInboxOncePerPeriod) {
+  std::ostringstream log;
+  wb::Whiteboard board;
+  BridgeConfig c;
+  c.robot = 7;
+  c.domain = test_domain();
+  c.health_period = 1s;
+  Bridge bridge(board, c);
+  board.post(wb::Print{"one"});
+  (void)bridge.pump(0s);
+  board.post(wb::Print{"two"});
+  (void)bridge.pump(500ms);  // inside the period: no second health
+  EXPECT_EQ(board.generation<wb::BridgeHealth>(), 0U) << "posted before the cycle's delivery point";
+  EXPECT_EQ(bridge.inbox().deliver(board), 1U);
+  ASSERT_EQ(board.generation<wb::BridgeHealth>(), 1U);
+  const wb::BridgeHealth first = board.get<wb::BridgeHealth>();
+  EXPECT_EQ(first.sent, 1U);  // the pump that posted it had sent "one"
+  EXPECT_EQ(first.pumps, 0U);  // counted after the pass
+  (void)bridge.pump(1s);
+  EXPECT_EQ(bridge.inbox().deliver(board), 1U);
+  const wb::BridgeHealth second = board.get<wb::BridgeHealth>();
+  EXPECT_EQ(second.sent, 3U);  // "one", "two" and the first health, published like any type
+  EXPECT_EQ(second.pumps, 2U);
+  EXPECT_EQ(second.requests_accepted + second.requests_refused + second.failed + second.missed, 0U);
 }
 
 }  // namespace

@@ -95,7 +95,14 @@ TEST(WbTextForm, ArraysAreTheirElements) {
   t.task_count = 2;
   t.task_worst_ns[0] = 150;
   t.task_worst_ns[1] = -1;
-  EXPECT_EQ(t.description(), "10,0,0,2,150,-1,0,0,0,0,0,0,0,0,0,0,0,0,0,0");
+  t.task_every[0] = 5;
+  // frames, overruns, slips, task_count, 16 worst times, the (empty) names, then 16 of each array.
+  std::string want = "10,0,0,2,150,-1";
+  for (int i = 0; i < 14; ++i) want += ",0";
+  want += ",";  // task_names: empty
+  want += ",5";
+  for (int i = 0; i < 15 + 4 * 16; ++i) want += ",0";
+  EXPECT_EQ(t.description(), want);
 }
 
 // ---- errors -------------------------------------------------------------------------------------

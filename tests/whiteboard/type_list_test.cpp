@@ -14,13 +14,15 @@ TEST(WbTypeList, NamesAndIdsAreTheSchemaOnes) {
                                        "Pose",       "LaserSummary", "FsmStatus",
                                        "FsmControl", "ExecutiveTiming", "Print",
                                        "FieldLines",  "HeadPosture",   "BodyState",    "MissionGoals",
-                                       "MissionStatus", "RobotDetections", "LaserScan", "Plan", "ArbiterCommand"};
+                                       "MissionStatus", "RobotDetections", "LaserScan", "Plan", "ArbiterCommand",
+                                       "BridgeHealth"};
   ASSERT_EQ(kTypeCount, names.size());
   for (std::size_t i = 0; i < kTypeCount; ++i) {
     EXPECT_EQ(kTypes[i].name, names[i]);
     EXPECT_EQ(to_underlying(kTypes[i].id), i + 1);
-    // HeadPosture gained the torso's tilt in version 2.
-    EXPECT_EQ(kTypes[i].version, names[i] == "HeadPosture" ? 2 : 1) << names[i];
+    // Version 2: HeadPosture gained the torso's tilt, ExecutiveTiming the task table, Plan the map.
+    const bool second = names[i] == "HeadPosture" || names[i] == "ExecutiveTiming" || names[i] == "Plan";
+    EXPECT_EQ(kTypes[i].version, second ? 2 : 1) << names[i];
   }
   static_assert(BallBelief::kId == TypeId{1} && Print::kName == "Print");
   static_assert(kIndexOf<Pose> == 3);

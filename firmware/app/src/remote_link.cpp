@@ -46,8 +46,7 @@ remote::BridgeConfig make_bridge_config(const FirmwareConfig& config, std::vecto
 
 RemoteLink::RemoteLink(const FirmwareConfig& config, const wb::Whiteboard& board, std::vector<std::string> machines,
                        std::ostream& log)
-    : accepts_(!config.remote.accept.empty()),
-      lockstep_(config.clock == ClockMode::kLockstep),
+    : lockstep_(config.clock == ClockMode::kLockstep),
       wait_for_monitors_(config.remote.wait_for_monitors),
       wait_timeout_s_(config.remote.wait_timeout_s) {
   try {

@@ -19,6 +19,11 @@ PlannerTask::PlannerTask(const PlannerSettings& settings, wb::Whiteboard& board,
       graph_(map_, model_) {
   search_.reserve(graph_.vertex_count());
   path_.assign(static_cast<std::size_t>(graph_.vertex_count()), -1);
+  plan_.map_origin_x = settings.map.origin_x;
+  plan_.map_origin_y = settings.map.origin_y;
+  plan_.map_resolution = settings.map.resolution;
+  plan_.map_width = static_cast<std::uint16_t>(settings.map.width_cells);
+  plan_.map_height = static_cast<std::uint16_t>(settings.map.height_cells);
 }
 
 void PlannerTask::mark(double wx, double wy) noexcept {

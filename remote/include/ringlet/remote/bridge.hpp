@@ -7,6 +7,8 @@
 //   missed        generations the whiteboard's ring overwrote before the bridge read them
 //   rate_skipped  generations left out on purpose by the type's rate limit (the newest is sent)
 //   failed        dds_write errors
+// These totals, the remote writes and the matched monitors go on the whiteboard as
+// wb::BridgeHealth once per health_period (through the inbox, like a remote write).
 // Everything DDS needs (participant, topics, writers) is created in the constructor; the thread
 // only reads, converts into a sample on its own stack and writes.
 //
@@ -53,6 +55,9 @@ struct BridgeConfig {
   std::vector<std::string> machines;  // the names an FsmControl may address (empty: any name)
   std::size_t inbox_capacity = 16;    // accepted requests waiting for the cycle, per type
   std::ostream* log = nullptr;        // refusals are described here (the first 20, then every 100th)
+  // How often the bridge posts its wb::BridgeHealth through the inbox (on pump's time line);
+  // 0: never. Whoever delivers the inbox puts it on the whiteboard.
+  std::chrono::nanoseconds health_period{std::chrono::seconds{1}};
 };
 
 /// What became of the requests addressed to this robot (requests to other robots are not seen).
@@ -149,6 +154,7 @@ class Bridge {
   template <wb::Message T>
   void take_requests() noexcept;
   void refuse(std::string_view type, std::uint64_t request, const std::string& why) noexcept;
+  void post_health(std::chrono::nanoseconds now) noexcept;
   [[nodiscard]] std::uint32_t matched(std::size_t index) const noexcept;
   [[nodiscard]] const Slot* slot_of(wb::TypeId type) const noexcept;
 
@@ -158,6 +164,7 @@ class Bridge {
   std::array<Slot, wb::kTypeCount> slots_{};
   Inbox inbox_;
   std::uint64_t refusals_ = 0;
+  std::optional<std::chrono::nanoseconds> last_health_;
   hal::ThreadStopwatch stopwatch_;
   std::atomic<std::int64_t> cpu_ns_{0};
   std::atomic<std::uint64_t> pumps_{0};

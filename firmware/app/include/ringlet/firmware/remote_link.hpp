@@ -29,8 +29,8 @@ class RemoteLink final : public executive::FrameObserver {
              std::ostream& log);
   /// The observer that was there before (or null): it sees every frame first.
   void set_next(executive::FrameObserver* next) noexcept { next_ = next; }
-  /// The remote writes accepted, for the whiteboard task to deliver; null when none are allowed.
-  [[nodiscard]] remote::Inbox* inbox() noexcept { return accepts_ ? &bridge_->inbox() : nullptr; }
+  /// The remote writes accepted and the bridge's health, for the whiteboard task to deliver.
+  [[nodiscard]] remote::Inbox* inbox() noexcept { return &bridge_->inbox(); }
   [[nodiscard]] remote::RequestCounts requests() const noexcept { return bridge_->request_totals(); }
   [[nodiscard]] std::chrono::nanoseconds cpu_time() const noexcept { return bridge_->cpu_time(); }
   [[nodiscard]] std::uint64_t pumps() const noexcept { return bridge_->pumps(); }
@@ -53,7 +53,6 @@ class RemoteLink final : public executive::FrameObserver {
  private:
   std::unique_ptr<remote::Bridge> bridge_;
   executive::FrameObserver* next_ = nullptr;
-  bool accepts_;
   bool lockstep_;
   int wait_for_monitors_;
   double wait_timeout_s_;
