@@ -105,7 +105,7 @@ TEST_P(BadConfig, IsRefusedWithFileLineAndKey) {
 INSTANTIATE_TEST_SUITE_P(
     Cases, BadConfig,
     ::testing::Values(
-        BadCase{"backend", "backend = \"ros\"", "robot.backend: must be one of \"sim\", \"replay\", got \"ros\""},
+        BadCase{"backend", "backend = \"ros\"", "robot.backend: must be one of \"sim\", \"replay\", \"can\", got \"ros\""},
         BadCase{"seed", "seed = -3", "sim.seed: must be a non-negative integer"},
         BadCase{"max_speed", "max_speed = \"fast\"", "sim.max_speed: must be a number"},
         BadCase{"laser_beams", "laser_beams = 5000", "sim.laser_beams: must be between 1 and 721"},

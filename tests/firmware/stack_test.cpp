@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "firmware_test_support.hpp"
+#include "ringlet/firmware/backend_factory.hpp"
 #include "ringlet/firmware/mission_report.hpp"
 #include "ringlet/firmware/mission_runner.hpp"
 #include "ringlet/firmware/stack.hpp"
@@ -268,8 +269,16 @@ TEST(FirmwareStack, AMachineWhoseInputNobodyProvidesStopsStartUp) {
   }
 }
 
-TEST(FirmwareStack, CanBackendIsRefusedClearly) {
-  EXPECT_THROW((void)parse_as_shipped(with_line(shipped_config_text(), "backend", "backend = \"can\"")), ConfigError);
+// The CAN board runs on the real clock: the shipped (lockstep) configuration with backend "can"
+// parses, and building its robot is refused naming executive.clock.
+TEST(FirmwareStack, TheCanBoardIsRefusedInLockstep) {
+  const FirmwareConfig cfg = parse_as_shipped(with_line(shipped_config_text(), "backend", "backend = \"can\""));
+  try {
+    (void)make_robot(cfg);
+    FAIL() << "a CAN robot in lockstep";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("executive.clock: the CAN board runs on the real clock"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

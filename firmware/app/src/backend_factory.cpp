@@ -3,6 +3,8 @@
 #include <sstream>
 
 #include "config_section.hpp"
+#include "ringlet/hal/can/can_robot.hpp"
+#include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/hal/replay_robot.hpp"
 #include "ringlet/sim_hal/collision.hpp"
 #include "ringlet/sim_hal/sim_robot.hpp"
@@ -166,10 +168,64 @@ std::unique_ptr<hal::Robot> make_replay(const FirmwareConfig& config, const Repl
   return robot;
 }
 
+// ---- can: the real board over SocketCAN (hal/can/README.md) -------------------------------------
+
+struct CanBackendSettings final : BackendSettings {
+  hal::can::CanSettings can{};
+
+  [[nodiscard]] std::string source_name() const override { return "CAN " + can.interface; }
+  [[nodiscard]] std::optional<std::uint64_t> seed() const override { return std::nullopt; }
+};
+
+std::shared_ptr<const BackendSettings> read_can(Section& section, const FirmwareConfig& /*so_far*/) {
+  auto out = std::make_shared<CanBackendSettings>();
+  auto& c = out->can;
+  c.interface = section.text("interface", c.interface);
+  if (c.interface.empty() || c.interface.size() > 15) {
+    section.fail(*section.find("interface"), "interface", "must be a network interface name of 1 to 15 characters, e.g. \"can0\" or \"vcan0\"");
+  }
+  const auto ms = [&](const char* key, std::chrono::milliseconds def, int lo, int hi) {
+    return std::chrono::milliseconds{section.integer(key, static_cast<int>(def.count()), lo, hi)};
+  };
+  c.heartbeat_timeout = ms("heartbeat_timeout_ms", c.heartbeat_timeout, 20, 10000);
+  c.sensor_timeout = ms("sensor_timeout_ms", c.sensor_timeout, 5, 10000);
+  c.laser_timeout = ms("laser_timeout_ms", c.laser_timeout, 20, 10000);
+  c.reconnect_period = ms("reconnect_ms", c.reconnect_period, 10, 60000);
+  c.max_frames_per_read = section.integer("max_frames_per_read", c.max_frames_per_read, 1, 100000);
+  return out;
+}
+
+// The board on the real clock: CanRobot ages its sensors on CLOCK_MONOTONIC, the clock the
+// executive's real-time mode runs on.
+class CanBackend final : public hal::Robot {
+ public:
+  explicit CanBackend(const hal::can::CanSettings& s, std::string& error) : robot_(hal::can::CanRobot::open(s, clock_, error)) {}
+  [[nodiscard]] bool ok() const noexcept { return robot_ != nullptr; }
+  [[nodiscard]] std::string_view backend_name() const noexcept override { return "can"; }
+  hal::Sensors& sensors() noexcept override { return robot_->sensors(); }
+  hal::Actuators& actuators() noexcept override { return robot_->actuators(); }
+  hal::Camera* camera() noexcept override { return nullptr; }
+
+ private:
+  hal::MonotonicClock clock_;
+  std::unique_ptr<hal::can::CanRobot> robot_;
+};
+
+std::unique_ptr<hal::Robot> make_can(const FirmwareConfig& config, const CanBackendSettings& settings) {
+  if (config.clock != ClockMode::kRealtime) {
+    throw ConfigError(config.positions.at("executive.clock") +
+                      ": executive.clock: the CAN board runs on the real clock (executive.clock = \"realtime\" or --realtime)");
+  }
+  std::string error;
+  auto robot = std::make_unique<CanBackend>(settings.can, error);
+  if (!robot->ok()) throw ConfigError(config.positions.at("can.interface") + ": can.interface: " + error);
+  return robot;
+}
+
 }  // namespace
 
 const std::vector<std::string>& backend_names() {
-  static const std::vector<std::string> names{"sim", "replay"};
+  static const std::vector<std::string> names{"sim", "replay", "can"};
   return names;
 }
 
@@ -178,6 +234,7 @@ std::shared_ptr<const BackendSettings> read_backend_settings(const std::string& 
                                                              const FirmwareConfig& so_far) {
   if (name == "sim") return read_sim(section, base_dir, so_far);
   if (name == "replay") return read_replay(section, base_dir, so_far);
+  if (name == "can") return read_can(section, so_far);
   throw ConfigError("robot.backend: no reader for backend \"" + name + "\"");
 }
 
@@ -186,6 +243,7 @@ std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config) {
   if (config.backend == "replay") {
     return make_replay(config, static_cast<const ReplaySettings&>(*config.backend_settings));
   }
+  if (config.backend == "can") return make_can(config, static_cast<const CanBackendSettings&>(*config.backend_settings));
   throw ConfigError(config.positions.at("robot.backend") + ": robot.backend: \"" + config.backend +
                     "\" is not a backend of this build");
 }

@@ -1,0 +1,69 @@
+#pragma once
+// A SocketCAN raw socket, non-blocking, with error frames on: what the board backend reads and
+// writes. It carries Linux's `struct can_frame` (16 bytes), whatever the descriptor is: a CAN_RAW
+// socket bound to an interface (can0, vcan0), or, in tests, one end of a socketpair.
+//
+// receive() never blocks: a frame, nothing waiting, or an error frame, which it turns into the
+// bus's state (error-passive, bus-off, restarted) and counts. send() never blocks either: a full
+// transmit queue (EAGAIN / ENOBUFS) is reported so the caller can count it and move on.
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "ringlet/hal/can/protocol.hpp"
+
+namespace ringlet::hal::can {
+
+enum class BusState : std::uint8_t { kActive, kErrorPassive, kBusOff };
+
+enum class ReceiveStatus : std::uint8_t {
+  kFrame,       // `out` holds a data frame
+  kEmpty,       // nothing waiting
+  kErrorFrame,  // an error frame: state() may have changed
+  kBadFrame,    // a frame the protocol cannot carry (extended or remote frame, DLC > 8, short read)
+  kFailed,      // the socket failed (the interface went down): reopen
+};
+
+enum class SendStatus : std::uint8_t { kSent, kQueueFull, kFailed };
+
+class CanSocket {
+ public:
+  CanSocket() = default;
+  /// A CAN_RAW socket on `interface`, non-blocking, receiving error frames. On failure the socket
+  /// is closed and `error` says why (no such interface, no CAN support in the kernel, ...).
+  static CanSocket open(std::string_view interface, std::string& error);
+  /// Takes a descriptor that carries struct can_frame (e.g. a socketpair end) and makes it
+  /// non-blocking.
+  static CanSocket adopt(int fd) noexcept;
+  ~CanSocket();
+  CanSocket(CanSocket&& o) noexcept;
+  CanSocket& operator=(CanSocket&& o) noexcept;
+  CanSocket(const CanSocket&) = delete;
+  CanSocket& operator=(const CanSocket&) = delete;
+
+  [[nodiscard]] bool is_open() const noexcept { return fd_ >= 0; }
+  [[nodiscard]] int fd() const noexcept { return fd_; }
+
+  ReceiveStatus receive(RawFrame& out) noexcept;
+  SendStatus send(const RawFrame& frame) noexcept;
+
+  [[nodiscard]] BusState state() const noexcept { return state_; }
+  /// The controller said it restarted after a bus-off (CAN_ERR_RESTARTED), or an error frame
+  /// that reports no error-passive or bus-off came after one: the bus is active again.
+  [[nodiscard]] std::uint64_t error_frames() const noexcept { return error_frames_; }
+
+ private:
+  explicit CanSocket(int fd) noexcept : fd_(fd) {}
+  void close() noexcept;
+  int fd_ = -1;
+  BusState state_ = BusState::kActive;
+  std::uint64_t error_frames_ = 0;
+};
+
+/// Sends an error frame, the way the CAN driver does, on a descriptor (tests: the other end of
+/// a socketpair).
+bool send_error_frame(int fd, BusState state, bool restarted = false) noexcept;
+/// Sends a raw struct can_frame with the given ID flags and length (tests: malformed frames).
+bool send_raw(int fd, std::uint32_t can_id, std::uint8_t length, const std::uint8_t* data) noexcept;
+
+}  // namespace ringlet::hal::can
