@@ -205,6 +205,7 @@ class CanBackend final : public hal::Robot {
   hal::Sensors& sensors() noexcept override { return robot_->sensors(); }
   hal::Actuators& actuators() noexcept override { return robot_->actuators(); }
   hal::Camera* camera() noexcept override { return nullptr; }
+  [[nodiscard]] const hal::BoardHealth* board_health() const noexcept override { return robot_->board_health(); }
 
  private:
   hal::MonotonicClock clock_;

@@ -234,6 +234,16 @@ function renderStatus(s) {
   }
 }
 
+const BUS = ['active', 'error-passive', 'bus-off'];
+function renderBoard(s) {
+  const b = fieldsOf(s, 'BoardHealth');
+  if (!b) return;
+  $('board').textContent = `${b.board_alive ? 'alive' : 'LOST'} (state ${b.board_state}) · bus ${BUS[b.bus] || b.bus} · ` +
+    `${b.frames_received} frames in, ${b.frames_sent} out · ${b.malformed} malformed, ${b.unknown_id} unknown · ` +
+    `${b.stale_readings} stale readings · ${b.heartbeat_losses} heartbeats lost · ${b.bus_off} bus-off · ` +
+    `${b.tx_full} dropped (queue full) · ${b.board_faults} board faults` + (b.board_faults ? ` (last ${b.last_fault})` : '');
+}
+
 function render(s) {
   renderPicker(s);
   const status = $('status');
@@ -254,6 +264,7 @@ function render(s) {
   renderMachines(s);
   renderTiming(s);
   renderStatus(s);
+  renderBoard(s);
 }
 
 $('robot').addEventListener('change', (e) => {

@@ -1,6 +1,7 @@
 #include "ringlet/firmware/tasks/sense_task.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -38,10 +39,17 @@ void to_message(const hal::LaserScan& scan, std::int64_t stamp_ns, wb::LaserScan
   }
 }
 
+wb::BoardHealth to_message(const hal::BoardHealth& h) noexcept {
+  return {h.frames_received, h.frames_sent,    h.malformed,      h.unknown_id,      h.stale_readings,
+          h.heartbeat_losses, h.bus_off,       h.error_passive,  h.tx_full,         h.socket_failures,
+          h.reconnects,       h.refused_commands, h.board_faults, h.last_fault,     h.incomplete_scans,
+          static_cast<std::uint8_t>(h.bus), h.board_state, h.board_alive};
+}
+
 }  // namespace
 
 std::unique_ptr<executive::Task> SenseTask::make(TaskServices& services) {
-  return std::make_unique<SenseTask>(services.robot.sensors(), services.board);
+  return std::make_unique<SenseTask>(services.robot.sensors(), services.board, services.robot.board_health());
 }
 
 void SenseTask::run(const executive::TaskContext& ctx) noexcept {
@@ -55,6 +63,8 @@ void SenseTask::run(const executive::TaskContext& ctx) noexcept {
                               frame_.body.tilt.roll, frame_.body.valid});
   board_.post(wb::BodyState{frame_.stamp.count(), frame_.odometry.distance, frame_.odometry.velocity,
                             frame_.odometry.curvature, frame_.collided, frame_.power.battery_volts});
+  const auto per_second = static_cast<std::uint64_t>(std::chrono::seconds{1} / ctx.period);
+  if (health_ != nullptr && per_second > 0 && ctx.frame % per_second == 0) board_.post(to_message(*health_));
 }
 
 }  // namespace ringlet::firmware

@@ -1,6 +1,7 @@
 #pragma once
 // HAL sensors → whiteboard: the pose measurement, the laser scan and its nearest return, the head's
-// posture and the base's state (odometry, bumper, battery), each stamped. On the simulated robot this read is
+// posture and the base's state (odometry, bumper, battery), each stamped; and, once a second, the
+// link to the board when the backend has one (BoardHealth). On the simulated robot this read is
 // also what advances the world by one period.
 #include <memory>
 
@@ -15,20 +16,22 @@ namespace ringlet::firmware {
 class SenseTask final : public executive::Task {
  public:
   static constexpr TaskDeclaration kDeclaration{
-      "sense", kNoTypes, kTypeNames<wb::Pose, wb::LaserSummary, wb::LaserScan, wb::HeadPosture, wb::BodyState>,
+      "sense", kNoTypes, kTypeNames<wb::Pose, wb::LaserSummary, wb::LaserScan, wb::HeadPosture, wb::BodyState, wb::BoardHealth>,
       here()};
   /// HAL read and posting. The simulator's own work inside read() (ray casting the laser, waiting
   /// for the render thread) is not the robot's and is not modelled.
   static constexpr hal::Nanos kModelledCost{40'000};
 
   static std::unique_ptr<executive::Task> make(TaskServices& services);
-  SenseTask(hal::Sensors& sensors, wb::Whiteboard& board) noexcept : sensors_(sensors), board_(board) {}
+  SenseTask(hal::Sensors& sensors, wb::Whiteboard& board, const hal::BoardHealth* health = nullptr) noexcept
+      : sensors_(sensors), board_(board), health_(health) {}
   void run(const executive::TaskContext& ctx) noexcept override;
   [[nodiscard]] hal::Nanos modelled_cost() const noexcept override { return kModelledCost; }
 
  private:
   hal::Sensors& sensors_;
   wb::Whiteboard& board_;
+  const hal::BoardHealth* health_;  // the backend's board, or null
   hal::SensorFrame frame_{};  // filled in place by the backend: no copy of the laser per frame
   wb::LaserScan scan_{};      // the scan as posted (millimetres), kept here: 1.5 kB off the stack
 };

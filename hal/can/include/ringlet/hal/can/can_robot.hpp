@@ -24,12 +24,15 @@
 #include <memory>
 #include <string>
 
+#include "ringlet/hal/board_health.hpp"
 #include "ringlet/hal/can/can_socket.hpp"
 #include "ringlet/hal/can/protocol.hpp"
 #include "ringlet/hal/clock.hpp"
 #include "ringlet/hal/robot.hpp"
 
 namespace ringlet::hal::can {
+
+using hal::BoardHealth;
 
 struct CanSettings {
   std::string interface = "can0";
@@ -38,28 +41,6 @@ struct CanSettings {
   std::chrono::milliseconds laser_timeout{300};      // the 10 Hz laser
   std::chrono::milliseconds reconnect_period{500};
   int max_frames_per_read = 4096;  // bounds the drain: a babbling bus cannot hold the cycle
-};
-
-/// What the link to the board has seen since start: the board's health as the controller knows it.
-struct BoardHealth {
-  std::uint64_t frames_received = 0;
-  std::uint64_t frames_sent = 0;
-  std::uint64_t malformed = 0;       // wrong length, value out of range, not a standard data frame
-  std::uint64_t unknown_id = 0;
-  std::uint64_t stale_readings = 0;  // reads in which at least one sensor was stale
-  std::uint64_t heartbeat_losses = 0;
-  std::uint64_t bus_off = 0;
-  std::uint64_t error_passive = 0;
-  std::uint64_t tx_full = 0;
-  std::uint64_t socket_failures = 0;
-  std::uint64_t reconnects = 0;
-  std::uint64_t refused_commands = 0;  // commands outside the protocol's ranges (not sent; a stop is)
-  std::uint64_t board_faults = 0;      // BOARD_FAULT frames
-  std::uint16_t last_fault = 0;
-  std::uint64_t incomplete_scans = 0;  // laser scans with a chunk missing
-  BusState bus = BusState::kActive;
-  std::uint8_t board_state = 0;        // the last BOARD_HEARTBEAT state
-  bool board_alive = false;
 };
 
 class CanRobot final : public Robot, private Sensors, private Actuators {
@@ -76,6 +57,7 @@ class CanRobot final : public Robot, private Sensors, private Actuators {
   Camera* camera() noexcept override { return nullptr; }
 
   [[nodiscard]] const BoardHealth& health() const noexcept { return health_; }
+  [[nodiscard]] const BoardHealth* board_health() const noexcept override { return &health_; }
   /// True while no board heartbeat has come for heartbeat_timeout.
   [[nodiscard]] bool board_lost() const noexcept { return lost_; }
 

@@ -10,11 +10,12 @@
 #include <string>
 #include <string_view>
 
+#include "ringlet/hal/board_health.hpp"
 #include "ringlet/hal/can/protocol.hpp"
 
 namespace ringlet::hal::can {
 
-enum class BusState : std::uint8_t { kActive, kErrorPassive, kBusOff };
+using hal::BusState;
 
 enum class ReceiveStatus : std::uint8_t {
   kFrame,       // `out` holds a data frame
