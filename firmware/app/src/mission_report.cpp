@@ -124,6 +124,7 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
   }
   if (const VisionStats* v = telemetry.vision()) s.vision = *v;
   s.run_hash = run_hash(stack, s);
+  if (const hal::BoardHealth* board = stack.robot().board_health()) s.board = *board;
   if (const RemoteLink* r = stack.remote()) {
     const auto& b = r->bridge_config();
     s.remote = RemoteSummary{b.robot,        static_cast<int>(b.domain.id),   b.domain.partition,
@@ -184,6 +185,18 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
       out << line;
     }
   }
+  if (s.board) {
+    const hal::BoardHealth& b = *s.board;
+    std::snprintf(line, sizeof line,
+                  "  board: %s, %llu frames in, %llu out, %llu malformed, %llu unknown, %llu stale readings, "
+                  "%llu heartbeats lost, %llu bus-off, %llu dropped (queue full), %llu board faults\n",
+                  b.board_alive ? "alive" : "LOST", static_cast<unsigned long long>(b.frames_received),
+                  static_cast<unsigned long long>(b.frames_sent), static_cast<unsigned long long>(b.malformed),
+                  static_cast<unsigned long long>(b.unknown_id), static_cast<unsigned long long>(b.stale_readings),
+                  static_cast<unsigned long long>(b.heartbeat_losses), static_cast<unsigned long long>(b.bus_off),
+                  static_cast<unsigned long long>(b.tx_full), static_cast<unsigned long long>(b.board_faults));
+    out << line;
+  }
   if (s.dropped_samples > 0) {
     std::snprintf(line, sizeof line, "  trajectory samples dropped (buffer full): %llu\n",
                   static_cast<unsigned long long>(s.dropped_samples));
@@ -207,6 +220,20 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
 namespace {
 nlohmann::json counts_json(const remote::TypeCounts& c) {
   return {{"sent", c.sent}, {"missed", c.missed}, {"rate_skipped", c.rate_skipped}, {"failed", c.failed}};
+}
+nlohmann::json board_json(const MissionSummary& s) {
+  if (!s.board) return nullptr;
+  const hal::BoardHealth& b = *s.board;
+  static constexpr const char* kBus[] = {"active", "error-passive", "bus-off"};
+  return {{"alive", b.board_alive},          {"board_state", b.board_state},
+          {"bus", kBus[static_cast<int>(b.bus)]}, {"frames_received", b.frames_received},
+          {"frames_sent", b.frames_sent},    {"malformed", b.malformed},
+          {"unknown_id", b.unknown_id},      {"stale_readings", b.stale_readings},
+          {"heartbeat_losses", b.heartbeat_losses}, {"bus_off", b.bus_off},
+          {"error_passive", b.error_passive}, {"tx_full", b.tx_full},
+          {"socket_failures", b.socket_failures}, {"reconnects", b.reconnects},
+          {"refused_commands", b.refused_commands}, {"board_faults", b.board_faults},
+          {"last_fault", b.last_fault},      {"incomplete_scans", b.incomplete_scans}};
 }
 nlohmann::json remote_json(const MissionSummary& s) {
   if (!s.remote) return nullptr;
@@ -266,6 +293,7 @@ nlohmann::json summary_json(const MissionSummary& s) {
           {"fsm_status_seen", s.fsm_status_seen},
           {"vision", vision},
           {"remote", remote_json(s)},
+          {"board", board_json(s)},
           {"trajectory_samples_dropped", s.dropped_samples},
           {"ground_truth", s.truth ? nlohmann::json{{"distance_m", s.truth->distance_m},
                                                     {"collisions", s.truth->collisions}}

@@ -329,6 +329,7 @@ Actuators& RecordingRobot::actuators() noexcept { return impl_->inner.actuators(
 Camera* RecordingRobot::camera() noexcept { return impl_->camera.get(); }
 BallSensor* RecordingRobot::ball_sensor() noexcept { return impl_->ball.get(); }
 const GroundTruth* RecordingRobot::ground_truth() const noexcept { return impl_->inner.ground_truth(); }
+const BoardHealth* RecordingRobot::board_health() const noexcept { return impl_->inner.board_health(); }
 
 RecordingStatus RecordingRobot::stop() noexcept {
   impl_->stop();

@@ -5,6 +5,8 @@
 #include <ostream>
 #include <string>
 #include <optional>
+
+#include "ringlet/hal/board_health.hpp"
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -69,6 +71,7 @@ struct MissionSummary {
   std::optional<TruthSummary> truth;  // only with ground truth
   std::optional<VisionStats> vision;  // with a camera: what vision found
   std::optional<RemoteSummary> remote;  // with [remote] enabled
+  std::optional<hal::BoardHealth> board;  // a backend with a board (can): the link at the end
 };
 
 /// `safe_before_shutdown`: the failsafe policy or the watchdog forced the safe state; a signal in

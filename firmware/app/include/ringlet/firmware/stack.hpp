@@ -46,6 +46,7 @@ class FirmwareStack {
   [[nodiscard]] const executive::Executive& executive() const noexcept { return *executive_; }
   /// The robot the tasks drive: the backend's, or the recorder wrapped round it (--record).
   [[nodiscard]] hal::Robot& robot() noexcept { return recorder_ ? *recorder_ : *robot_; }
+  [[nodiscard]] const hal::Robot& robot() const noexcept { return recorder_ ? *recorder_ : *robot_; }
   [[nodiscard]] hal::Clock& clock() noexcept;
   [[nodiscard]] executive::EventLog& events() noexcept { return events_; }
   [[nodiscard]] const Telemetry& telemetry() const noexcept { return telemetry_; }

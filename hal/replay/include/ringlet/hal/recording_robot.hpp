@@ -68,6 +68,7 @@ class RecordingRobot final : public Robot {
   Camera* camera() noexcept override;            // null iff the wrapped robot has none
   BallSensor* ball_sensor() noexcept override;   // null iff the wrapped robot has none
   [[nodiscard]] const GroundTruth* ground_truth() const noexcept override;
+  [[nodiscard]] const BoardHealth* board_health() const noexcept override;  // the wrapped robot's
 
   /// Writes what is queued, a gap record for drops not yet marked, the end record; closes the
   /// file and joins the writer. Idempotent; the destructor calls it. Never throws.
