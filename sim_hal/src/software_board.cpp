@@ -99,7 +99,8 @@ void SoftwareBoard::step(hal::Nanos now) noexcept {
   robot_.actuators().write(command_);
   (void)robot_.sensors().read(frame_);  // the world advances one period
   send_sensors(frame_);
-  const auto every = [&](int n) { return n > 0 && counts_.steps % static_cast<std::uint64_t>(n) == 1 % static_cast<std::uint64_t>(n); };
+  // Due in the first step and every n-th after it.
+  const auto every = [&](int n) { return n > 0 && (counts_.steps - 1) % static_cast<std::uint64_t>(n) == 0; };
   if (every(settings_.heartbeat_every)) {
     send(kBoardHeartbeatId, values_of({static_cast<double>(heartbeat_counter_++), static_cast<double>(state_), static_cast<double>(faults_)}));
   }

@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::string error;
-  hal::can::CanSocket socket = hal::can::CanSocket::open(interface, error);
+  hal::can::CanSocket socket = hal::can::CanSocket::open(interface, &error);
   if (!socket.is_open()) {
     std::cerr << "ringlet-board-sim: " << error << "\n";
     return 2;

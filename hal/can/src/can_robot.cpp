@@ -12,12 +12,11 @@ constexpr int kSafeStateEvery = 10;  // reads per repeated CTRL_SAFE_STATE while
 }  // namespace
 
 std::unique_ptr<CanRobot> CanRobot::open(const CanSettings& settings, const Clock& clock, std::string& error) {
-  CanSocket socket = CanSocket::open(settings.interface, error);
+  CanSocket socket = CanSocket::open(settings.interface, &error);
   if (!socket.is_open()) return nullptr;
-  return std::make_unique<CanRobot>(settings, std::move(socket), clock, [settings] {
-    std::string ignored;
-    return CanSocket::open(settings.interface, ignored);
-  });
+  // The interface's name is copied once here; reopening builds no message (no allocation).
+  return std::make_unique<CanRobot>(settings, std::move(socket), clock,
+                                    [name = settings.interface] { return CanSocket::open(name); });
 }
 
 CanRobot::CanRobot(const CanSettings& settings, CanSocket socket, const Clock& clock, std::function<CanSocket()> reopen)
@@ -168,9 +167,8 @@ bool CanRobot::read(SensorFrame& out) noexcept {
                      (heartbeat_at_.count() == 0 && now - start_ <= settings_.heartbeat_timeout);
   if (!alive && !lost_) {
     ++health_.heartbeat_losses;
-    heartbeat_lost_.store(true, std::memory_order_release);
     lost_ = true;
-    enter_safe_state();
+    latch_safe_state(SafeReason::kBoardLost);
   }
   lost_ = !alive;
   health_.board_alive = alive && heartbeat_at_.count() > 0;
@@ -201,12 +199,17 @@ bool CanRobot::read(SensorFrame& out) noexcept {
   return alive;  // the board answers; each stale sensor is marked invalid on its own
 }
 
-void CanRobot::send(const FrameSpec& spec, const Values& v) noexcept {
+bool CanRobot::send(const FrameSpec& spec, const Values& v) noexcept {
   RawFrame raw;
   if (!encode(spec, v, raw).ok()) {
     ++health_.refused_commands;
-    return;
+    return false;
   }
+  send_raw_frame(raw);
+  return true;
+}
+
+void CanRobot::send_raw_frame(const RawFrame& raw) noexcept {
   switch (socket_.send(raw)) {
     case SendStatus::kSent: ++health_.frames_sent; break;
     case SendStatus::kQueueFull: ++health_.tx_full; break;
@@ -222,34 +225,40 @@ void CanRobot::write(const ActuatorCommand& cmd) noexcept {
   }
   if (in_safe_state()) return;  // latched: only CTRL_SAFE_STATE (read) and the stop already sent
   const FrameSpec& drive = *find_frame(kDriveId);
-  Values d = values_of({cmd.drive.curvature, cmd.drive.velocity, static_cast<double>(drive_counter_++), 1.0});
-  RawFrame probe;
-  if (!encode(drive, d, probe).ok()) {
-    // A command the board cannot take is a controller bug: stop rather than guess.
-    ++health_.refused_commands;
-    d = values_of({0.0, 0.0, d[2], 0.0});
+  const auto counter = static_cast<double>(drive_counter_++);
+  // A command the board cannot take is a controller bug: stop rather than guess.
+  if (!send(drive, values_of({cmd.drive.curvature, cmd.drive.velocity, counter, 1.0}))) {
+    send(drive, values_of({0.0, 0.0, counter, 0.0}));
   }
-  send(drive, d);
   send(*find_frame(kHeadCommandId), values_of({cmd.head.yaw, cmd.head.pitch}));
 }
 
-void CanRobot::send_safe_state() noexcept {
-  send(*find_frame(kSafeStateId), values_of({static_cast<double>(lost_ ? SafeReason::kBoardLost : SafeReason::kPolicy)}));
-  send(*find_frame(kDriveId), values_of({0.0, 0.0, static_cast<double>(drive_counter_++), 0.0}));
+// CTRL_SAFE_STATE with its reason, and a stop (CTRL_DRIVE with enable 0): what both the latch and
+// its repeats send.
+bool CanRobot::safe_state_frames(std::uint8_t counter, RawFrame& safe, RawFrame& stop) const noexcept {
+  const auto reason = static_cast<double>(safe_reason_.load(std::memory_order_acquire));
+  return encode(*find_frame(kSafeStateId), values_of({reason}), safe).ok() &&
+         encode(*find_frame(kDriveId), values_of({0.0, 0.0, static_cast<double>(counter), 0.0}), stop).ok();
 }
 
-void CanRobot::enter_safe_state() noexcept {
+void CanRobot::send_safe_state() noexcept {
+  RawFrame safe, stop;
+  if (!safe_state_frames(drive_counter_++, safe, stop)) return;
+  for (const RawFrame& f : {safe, stop}) send_raw_frame(f);
+}
+
+void CanRobot::enter_safe_state() noexcept { latch_safe_state(SafeReason::kPolicy); }
+
+void CanRobot::latch_safe_state(SafeReason reason) noexcept {
   // Any thread (the watchdog, a signal path): the flag, and the stop straight on the descriptor,
   // touching nothing the cycle owns. The cycle repeats it, counted, every kSafeStateEvery reads.
+  if (in_safe_state()) return;  // the first reason stands
+  safe_reason_.store(reason, std::memory_order_release);
   if (safe_.exchange(true, std::memory_order_acq_rel)) return;
   const int fd = fd_.load(std::memory_order_acquire);
-  if (fd < 0) return;
-  RawFrame stop, drive;
-  const auto reason = static_cast<double>(heartbeat_lost_.load(std::memory_order_acquire) ? SafeReason::kBoardLost : SafeReason::kPolicy);
-  if (encode(*find_frame(kSafeStateId), values_of({reason}), stop).ok()) (void)send_raw(fd, stop.id, stop.length, stop.data.data());
-  if (encode(*find_frame(kDriveId), values_of({0.0, 0.0, 0.0, 0.0}), drive).ok()) {
-    (void)send_raw(fd, drive.id, drive.length, drive.data.data());
-  }
+  RawFrame safe, stop;
+  if (fd < 0 || !safe_state_frames(0, safe, stop)) return;
+  for (const RawFrame& f : {safe, stop}) (void)send_raw(fd, f.id, f.length, f.data.data());
 }
 
 void CanRobot::set_socket(CanSocket socket) noexcept {

@@ -23,36 +23,34 @@ bool set_nonblocking(int fd) noexcept {
 
 }  // namespace
 
-CanSocket CanSocket::open(std::string_view interface, std::string& error) {
-  const std::string name(interface);
-  if (name.empty() || name.size() >= IFNAMSIZ) {
-    error = "CAN interface \"" + name + "\": a name of 1 to " + std::to_string(IFNAMSIZ - 1) + " characters";
-    return {};
-  }
+CanSocket CanSocket::open(std::string_view interface, std::string* error) {
+  // Messages are built only for a caller that asked: a reconnect on the cycle path allocates nothing.
+  const auto fail = [&](const char* what, bool with_errno, const char* hint) {
+    if (error != nullptr) {
+      *error = "CAN interface \"" + std::string(interface) + "\": " + what;
+      if (with_errno) *error += std::string(": ") + std::strerror(errno);
+      *error += hint;
+    }
+    return CanSocket{};
+  };
+  if (interface.empty() || interface.size() >= IFNAMSIZ) return fail("a name of 1 to 15 characters", false, "");
   const int fd = ::socket(PF_CAN, SOCK_RAW | SOCK_NONBLOCK | SOCK_CLOEXEC, CAN_RAW);
   if (fd < 0) {
-    error = std::string("CAN socket: ") + std::strerror(errno) + " (is the kernel's can-raw module loaded?)";
+    if (error != nullptr) *error = std::string("CAN socket: ") + std::strerror(errno) + " (is the kernel's can-raw module loaded?)";
     return {};
   }
   CanSocket s(fd);
   ifreq ifr{};
-  std::memcpy(ifr.ifr_name, name.c_str(), name.size() + 1);
-  if (::ioctl(fd, SIOCGIFINDEX, &ifr) < 0) {
-    error = "CAN interface \"" + name + "\": " + std::strerror(errno) + " (ip link show type can / vcan)";
-    return {};
-  }
+  std::memcpy(ifr.ifr_name, interface.data(), interface.size());  // zero-terminated by ifr{}
+  if (::ioctl(fd, SIOCGIFINDEX, &ifr) < 0) return fail("no such interface", true, " (ip link show type can / vcan)");
   const can_err_mask_t errors = CAN_ERR_BUSOFF | CAN_ERR_CRTL | CAN_ERR_RESTARTED | CAN_ERR_TX_TIMEOUT;
   if (::setsockopt(fd, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &errors, sizeof errors) < 0) {
-    error = "CAN interface \"" + name + "\": cannot receive error frames: " + std::strerror(errno);
-    return {};
+    return fail("cannot receive error frames", true, "");
   }
   sockaddr_can addr{};
   addr.can_family = AF_CAN;
   addr.can_ifindex = ifr.ifr_ifindex;
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) < 0) {
-    error = "CAN interface \"" + name + "\": bind: " + std::strerror(errno);
-    return {};
-  }
+  if (::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) < 0) return fail("bind", true, "");
   return s;
 }
 

@@ -63,8 +63,7 @@ void SenseTask::run(const executive::TaskContext& ctx) noexcept {
                               frame_.body.tilt.roll, frame_.body.valid});
   board_.post(wb::BodyState{frame_.stamp.count(), frame_.odometry.distance, frame_.odometry.velocity,
                             frame_.odometry.curvature, frame_.collided, frame_.power.battery_volts});
-  const auto per_second = static_cast<std::uint64_t>(std::chrono::seconds{1} / ctx.period);
-  if (health_ != nullptr && per_second > 0 && ctx.frame % per_second == 0) board_.post(to_message(*health_));
+  if (health_ != nullptr && ctx.first_frame_of_each(std::chrono::seconds{1})) board_.post(to_message(*health_));
 }
 
 }  // namespace ringlet::firmware

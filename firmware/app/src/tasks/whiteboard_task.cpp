@@ -17,8 +17,7 @@ void WhiteboardTask::run(const executive::TaskContext& ctx) noexcept {
   if (log_ != nullptr) log_->set_frame(ctx.frame);
   if (inbox_ != nullptr) (void)inbox_->deliver(board_);
   board_.dispatch();
-  const auto per_second = static_cast<std::uint64_t>(std::chrono::seconds{1} / ctx.period);
-  if (executive_ == nullptr || per_second == 0 || ctx.frame % per_second != 0) return;
+  if (executive_ == nullptr || !ctx.first_frame_of_each(std::chrono::seconds{1})) return;
   wb::ExecutiveTiming t{};
   const auto& frames = executive_->frame_stats();
   t.frames = frames.frames;

@@ -27,6 +27,12 @@ struct TaskContext {
 
   [[nodiscard]] Nanos time_left() const noexcept { return budget - (stopwatch->wall_now() - started_wall); }
   [[nodiscard]] bool out_of_time() const noexcept { return time_left() <= Nanos{0}; }
+  /// True in the first frame of every `span` of base periods (frame 0, then every span / period
+  /// frames): what a task posts "once a second" posts in these frames. False if span < period.
+  [[nodiscard]] bool first_frame_of_each(Nanos span) const noexcept {
+    const auto frames = period.count() > 0 ? static_cast<std::uint64_t>(span / period) : 0U;
+    return frames > 0 && frame % frames == 0;
+  }
   /// Ends the run after this frame (e.g. the mission is complete).
   void request_stop() const noexcept { stop_flag->store(true, std::memory_order_relaxed); }
 };

@@ -69,8 +69,12 @@ class CanRobot final : public Robot, private Sensors, private Actuators {
 
   void drain(Nanos now) noexcept;
   void take(const FrameSpec& spec, const Values& v, Nanos now) noexcept;
-  void send(const FrameSpec& spec, const Values& v) noexcept;
+  /// False (counted as refused, nothing sent) when the values are outside the protocol.
+  bool send(const FrameSpec& spec, const Values& v) noexcept;
+  void send_raw_frame(const RawFrame& raw) noexcept;  // sent, queue full or failed: counted
+  bool safe_state_frames(std::uint8_t counter, RawFrame& safe, RawFrame& stop) const noexcept;
   void send_safe_state() noexcept;
+  void latch_safe_state(SafeReason reason) noexcept;
   void reconnect(Nanos now) noexcept;
   void set_socket(CanSocket socket) noexcept;
   [[nodiscard]] bool fresh(Nanos stamp, std::chrono::milliseconds timeout, Nanos now) const noexcept;
@@ -81,7 +85,7 @@ class CanRobot final : public Robot, private Sensors, private Actuators {
   std::function<CanSocket()> reopen_;
   BoardHealth health_;
   std::atomic<bool> safe_{false};
-  std::atomic<bool> heartbeat_lost_{false};
+  std::atomic<SafeReason> safe_reason_{SafeReason::kPolicy};  // why the safe state was latched
   std::atomic<int> fd_{-1};  // the socket's descriptor, for enter_safe_state from another thread
   bool lost_ = false;
   Nanos start_{0};

@@ -31,8 +31,9 @@ class CanSocket {
  public:
   CanSocket() = default;
   /// A CAN_RAW socket on `interface`, non-blocking, receiving error frames. On failure the socket
-  /// is closed and `error` says why (no such interface, no CAN support in the kernel, ...).
-  static CanSocket open(std::string_view interface, std::string& error);
+  /// is closed and, when `error` is given, it says why (no such interface, no CAN support in the
+  /// kernel, ...). Without `error` nothing is allocated: CanRobot reopens from the sense task.
+  static CanSocket open(std::string_view interface, std::string* error = nullptr);
   /// Takes a descriptor that carries struct can_frame (e.g. a socketpair end) and makes it
   /// non-blocking.
   static CanSocket adopt(int fd) noexcept;
