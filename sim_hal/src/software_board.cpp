@@ -35,6 +35,7 @@ void SoftwareBoard::take_commands(hal::Nanos now) noexcept {
     if (spec->id == kDriveId) {
       ++counts_.commands;
       last_command_ = now;
+      drive_counter_ = static_cast<std::uint8_t>(v[2]);
       const bool enable = v[3] > 0.5;
       command_.drive = enable ? hal::DriveCommand{v[0], v[1]} : hal::DriveCommand{};
       if (enable) commanded_ = true;
@@ -102,7 +103,8 @@ void SoftwareBoard::step(hal::Nanos now) noexcept {
   // Due in the first step and every n-th after it.
   const auto every = [&](int n) { return n > 0 && (counts_.steps - 1) % static_cast<std::uint64_t>(n) == 0; };
   if (every(settings_.heartbeat_every)) {
-    send(kBoardHeartbeatId, values_of({static_cast<double>(heartbeat_counter_++), static_cast<double>(state_), static_cast<double>(faults_)}));
+    send(kBoardHeartbeatId, values_of({static_cast<double>(heartbeat_counter_++), static_cast<double>(state_), static_cast<double>(faults_),
+                                                static_cast<double>(drive_counter_)}));
   }
   if (every(settings_.power_every)) {
     send(kPowerId, values_of({std::clamp(frame_.power.battery_volts, 0.0, 65.0), std::clamp(frame_.power.bus_volts, 0.0, 65.0)}));

@@ -147,6 +147,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"timeout_s", "timeout_s = 1e6", "mission.timeout_s: must be between 0.01 and 86400, got 1e+06"},
         BadCase{"timeout_s", "timeout_s = nan", "mission.timeout_s: must be between 0.01 and 86400, got nan"},
         BadCase{"goals", "# no goals", "mission.goals: the mission needs its goals"},
+        BadCase{"timeout_s", "timeout_s = 300\nball_tracking = \"no\"", "mission.ball_tracking: must be true or false"},
         BadCase{"goals", "goals = []", "mission.goals: must be a non-empty array of [x, y] pairs"},
         BadCase{"goals", "goals = [[1, 2], [3]]", "mission.goals[1]: must be a pair of finite numbers [x, y]"},
         BadCase{"goals", "goals = [[1, \"north\"]]", "mission.goals[0]: must be a pair of finite numbers [x, y]"},

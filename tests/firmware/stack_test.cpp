@@ -47,7 +47,7 @@ Run run(const std::string& text) {
   for (const auto& st : stack.executive().task_stats()) r.overruns += st.overruns;
   r.frame_overruns = stack.executive().frame_stats().frame_overruns;
   r.safe_state = stack.robot().actuators().in_safe_state();
-  r.safety_state = std::string(stack.schedule().machine(2).current_state_name());
+  r.safety_state = std::string(stack.schedule().machine(stack.schedule().size() - 1).current_state_name());  // Safety runs last
   for (std::size_t i = 0; i < stack.executive().tasks().size(); ++i) {
     if (stack.executive().tasks()[i].spec.name == "vision") r.vision_timing = stack.executive().task_stats()[i];
   }
@@ -205,6 +205,19 @@ TEST(FirmwareVision, WithoutAVisionTaskNothingProvidesTheBall) {
     EXPECT_NE(std::string(e.what()).find("machine 'BallTracker' requires 'BallBelief', but no task"), std::string::npos)
         << e.what();
   }
+}
+
+// A robot without a head camera (the CAN board of courtyard_can.toml): no ball task, and with
+// [mission] ball_tracking = false no BallTracker either; the mission runs on the other two.
+TEST(FirmwareStack, WithoutBallTrackingNoBallTaskIsNeededAndTheMissionCompletes) {
+  std::string text = with_line(shipped(), "  { name = \"ball_sensor\"", "");
+  text = with_line(text, "goal_tolerance_m", "goal_tolerance_m = 0.3\nball_tracking = false");
+  const auto r = run(text);
+  ASSERT_EQ(r.summary.machines.size(), 2U);
+  EXPECT_EQ(r.summary.machines[0].name, "Mission");
+  EXPECT_EQ(r.summary.machines[1].name, "Safety");
+  EXPECT_TRUE(r.summary.complete);
+  EXPECT_EQ(r.summary.collisions, 0U);
 }
 
 TEST(FirmwareStack, SameSeedSameTrajectoryOtherSeedOtherTrajectory) {

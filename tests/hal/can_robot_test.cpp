@@ -43,7 +43,7 @@ struct Bench {
   }
   // The board's every-10-ms frames, with a heartbeat.
   void beat(double x = 1.0) {
-    send(kBoardHeartbeatId, {7, 2, 0});
+    send(kBoardHeartbeatId, {7, 2, 0, 0});
     send(kPoseId, {x, 2.0, 0.25});
     send(kOdometryId, {12.5, 0.8, -0.1});
     send(kHeadJointsId, {0.3, 0.1});
@@ -119,6 +119,27 @@ TEST(CanRobot, CommandsGoOutWithAHeartbeatEveryTenth) {
   EXPECT_EQ(beats, 2);
 }
 
+// The board echoes the last CTRL_DRIVE it applied in its heartbeat; the controller measures from
+// sending that command to reading the echo.
+TEST(CanRobot, TheRoundTripIsMeasuredFromTheBoardsEchoOfTheDriveCounter) {
+  Bench b;
+  SensorFrame f;
+  for (int i = 0; i < 10; ++i) {
+    b.robot->actuators().write({{0.1, 0.5}, {0.0, 0.0}});  // drive counter i
+    b.clock.advance(std::chrono::milliseconds{i + 1});
+    b.send(kBoardHeartbeatId, {static_cast<double>(i), 2, 0, static_cast<double>(i)});
+    ASSERT_TRUE(b.read(f));
+  }
+  b.send(kBoardHeartbeatId, {10, 2, 0, 9});    // the same echo again: the board saw nothing new
+  b.send(kBoardHeartbeatId, {11, 2, 0, 200});  // a counter never sent
+  ASSERT_TRUE(b.read(f));
+  const RoundTrip& rt = b.robot->health().round_trip;
+  EXPECT_EQ(rt.samples, 10U);
+  EXPECT_EQ(rt.p50_us, 5250U) << "the 5th of 1..10 ms, reported at its 250 us bin's upper edge";
+  EXPECT_EQ(rt.p99_us, 10000U) << "the 10th, capped at the largest seen";
+  EXPECT_EQ(rt.max_us, 10000U);
+}
+
 TEST(CanRobot, AStaleSensorIsInvalidInThatReading) {
   Bench b;
   b.beat();
@@ -126,7 +147,7 @@ TEST(CanRobot, AStaleSensorIsInvalidInThatReading) {
   SensorFrame f;
   ASSERT_TRUE(b.read(f));
   b.clock.advance(60ms);  // past the 50 ms sensor timeout, inside the 300 ms heartbeat timeout
-  b.send(kBoardHeartbeatId, {8, 2, 0});
+  b.send(kBoardHeartbeatId, {8, 2, 0, 0});
   EXPECT_TRUE(b.read(f)) << "the board answers: only the stale sensors are invalid";
   EXPECT_FALSE(f.pose.valid);
   EXPECT_FALSE(f.body.valid);

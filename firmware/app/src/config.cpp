@@ -154,6 +154,7 @@ void read_mission(Section& mission, MissionSettings& m) {
   read_goals(mission, m);
   m.goal_tolerance = mission.number("goal_tolerance_m", m.goal_tolerance, 0.01, 10.0);
   m.timeout_s = mission.number("timeout_s", m.timeout_s, 0.01, kMaxRunSeconds);
+  m.ball_tracking = mission.boolean("ball_tracking", m.ball_tracking);
 }
 
 void read_follower(Section& follower, behaviour::MoveToWaypointParams& f) {

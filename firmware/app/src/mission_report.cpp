@@ -196,6 +196,13 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
                   static_cast<unsigned long long>(b.heartbeat_losses), static_cast<unsigned long long>(b.bus_off),
                   static_cast<unsigned long long>(b.tx_full), static_cast<unsigned long long>(b.board_faults));
     out << line;
+    const hal::RoundTrip& rt = b.round_trip;
+    if (rt.samples > 0) {
+      std::snprintf(line, sizeof line,
+                    "  command -> board -> sensor round trip: p50 %.2f ms, p99 %.2f ms, max %.2f ms (%llu commands)\n",
+                    rt.p50_us / 1e3, rt.p99_us / 1e3, rt.max_us / 1e3, static_cast<unsigned long long>(rt.samples));
+      out << line;
+    }
   }
   if (s.dropped_samples > 0) {
     std::snprintf(line, sizeof line, "  trajectory samples dropped (buffer full): %llu\n",
@@ -233,7 +240,9 @@ nlohmann::json board_json(const MissionSummary& s) {
           {"error_passive", b.error_passive}, {"tx_full", b.tx_full},
           {"socket_failures", b.socket_failures}, {"reconnects", b.reconnects},
           {"refused_commands", b.refused_commands}, {"board_faults", b.board_faults},
-          {"last_fault", b.last_fault},      {"incomplete_scans", b.incomplete_scans}};
+          {"last_fault", b.last_fault},      {"incomplete_scans", b.incomplete_scans},
+          {"round_trip", {{"samples", b.round_trip.samples}, {"p50_us", b.round_trip.p50_us},
+                          {"p99_us", b.round_trip.p99_us}, {"max_us", b.round_trip.max_us}}}};
 }
 nlohmann::json remote_json(const MissionSummary& s) {
   if (!s.remote) return nullptr;

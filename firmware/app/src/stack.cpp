@@ -91,7 +91,9 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& r
   // so that the turn that sees an obstacle also posts the stop that stands (safety.machine).
   // The mission is driven by one machine: straight at the goals (Mission), or through the planner
   // and the arbiter (Navigate); no task writes MotionCommand, so Safety's word is the last.
-  schedule_.add(ball_tracker_);
+  // A robot without a head camera has no ball to follow: no BallTracker, so nothing need provide
+  // BallBelief and the head is not commanded.
+  if (config_.mission.ball_tracking) schedule_.add(ball_tracker_);
   if (config_.mission.drive == DriveMode::kNavigate) {
     schedule_.add(navigate_machine_);
   } else {

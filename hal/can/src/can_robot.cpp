@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ringlet::hal::can {
 namespace {
@@ -33,6 +34,7 @@ void CanRobot::take(const FrameSpec& spec, const Values& v, Nanos now) noexcept 
     case kBoardHeartbeatId:
       heartbeat_at_ = now;
       health_.board_state = static_cast<std::uint8_t>(v[1]);
+      measure_round_trip(static_cast<std::uint8_t>(v[3]), now);
       break;
     case kBoardFaultId:
       ++health_.board_faults;
@@ -199,6 +201,32 @@ bool CanRobot::read(SensorFrame& out) noexcept {
   return alive;  // the board answers; each stale sensor is marked invalid on its own
 }
 
+void CanRobot::measure_round_trip(std::uint8_t drive_counter, Nanos now) noexcept {
+  Nanos& sent = drive_sent_at_[drive_counter];
+  // A counter sent more than a second ago is a previous lap of the 8-bit counter, not this one.
+  const bool ours = sent.count() > 0 && now >= sent && now - sent <= std::chrono::seconds{1};
+  const Nanos took = now - sent;
+  sent = Nanos{0};  // each command is measured once (a stopped controller's board repeats the echo)
+  if (!ours) return;
+  const auto us = static_cast<std::uint64_t>(took.count() / 1000);
+  ++round_trips_[std::min<std::size_t>(us / kRoundTripBinUs, kRoundTripBins - 1)];
+  RoundTrip& rt = health_.round_trip;
+  ++rt.samples;
+  rt.max_us = std::max(rt.max_us, static_cast<std::uint32_t>(std::min<std::uint64_t>(us, std::numeric_limits<std::uint32_t>::max())));
+  // Percentiles from the histogram: the upper edge of the bin holding the rank (never flatters).
+  const auto percentile = [&](std::uint64_t per_mille) {
+    const std::uint64_t rank = (rt.samples * per_mille + 999) / 1000;
+    std::uint64_t seen = 0;
+    for (std::size_t b = 0; b < kRoundTripBins; ++b) {
+      seen += round_trips_[b];
+      if (seen >= rank) return std::min(rt.max_us, static_cast<std::uint32_t>((b + 1) * kRoundTripBinUs));
+    }
+    return rt.max_us;
+  };
+  rt.p50_us = percentile(500);
+  rt.p99_us = percentile(990);
+}
+
 bool CanRobot::send(const FrameSpec& spec, const Values& v) noexcept {
   RawFrame raw;
   if (!encode(spec, v, raw).ok()) {
@@ -230,6 +258,7 @@ void CanRobot::write(const ActuatorCommand& cmd) noexcept {
   if (!send(drive, values_of({cmd.drive.curvature, cmd.drive.velocity, counter, 1.0}))) {
     send(drive, values_of({0.0, 0.0, counter, 0.0}));
   }
+  drive_sent_at_[static_cast<std::uint8_t>(counter)] = clock_.now();
   send(*find_frame(kHeadCommandId), values_of({cmd.head.yaw, cmd.head.pitch}));
 }
 

@@ -37,6 +37,7 @@ constexpr Signal kBoardHeartbeat[] = {
     {"counter", 0, 1, false, 1, 0, 255, "", {}, "+1 per frame"},
     {"state", 1, 1, false, 1, 0, 4, "", {}, "0 booting, 1 ready, 2 driving, 3 stopped by its watchdog, 4 safe state"},
     {"faults", 2, 2, false, 1, 0, 65535, "", {}, "faults since power-on"},
+    {"drive", 4, 1, false, 1, 0, 255, "", {}, "the counter of the last CTRL_DRIVE applied before this step's sensor frames: the controller's command -> board -> sensor round trip"},
 };
 constexpr Signal kPose[] = {
     {"x", 0, 3, true, 0.001, -8388.607, 8388.607, "m", -8388608, "world frame; raw -8388608 in x and y: no fix"},
@@ -86,7 +87,7 @@ constexpr FrameSpec kFrames[] = {
      "u = (kappa, v); the board stops the car when none arrives for its timeout (100 ms)", kDrive},
     {kHeadCommandId, "CTRL_HEAD", 4, D::kToBoard, "100 Hz (actuate)", "head target", kHeadCommand},
     {kControllerHeartbeatId, "CTRL_HEARTBEAT", 2, D::kToBoard, "10 Hz", "the controller is alive", kControllerHeartbeat},
-    {kBoardHeartbeatId, "BOARD_HEARTBEAT", 4, D::kFromBoard, "10 Hz",
+    {kBoardHeartbeatId, "BOARD_HEARTBEAT", 5, D::kFromBoard, "10 Hz",
      "the board is alive; the controller enters the safe state after [can] heartbeat_timeout_ms without one",
      kBoardHeartbeat},
     {kPoseId, "BOARD_POSE", 8, D::kFromBoard, "100 Hz", "y = (x, y, theta) of eq. 19", kPose},

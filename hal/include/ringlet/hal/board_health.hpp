@@ -9,6 +9,16 @@ namespace ringlet::hal {
 
 enum class BusState : std::uint8_t { kActive, kErrorPassive, kBusOff };
 
+// The command -> board -> sensor round trip: from sending a CTRL_DRIVE to reading the
+// BOARD_HEARTBEAT that says the board had applied it before that step's sensor frames. It includes
+// the wait for the next sense activation (up to one period), as every command's effect does.
+struct RoundTrip {
+  std::uint64_t samples = 0;
+  std::uint32_t p50_us = 0;
+  std::uint32_t p99_us = 0;
+  std::uint32_t max_us = 0;
+};
+
 struct BoardHealth {
   std::uint64_t frames_received = 0;
   std::uint64_t frames_sent = 0;
@@ -25,6 +35,7 @@ struct BoardHealth {
   std::uint64_t board_faults = 0;      // faults the board reported
   std::uint16_t last_fault = 0;
   std::uint64_t incomplete_scans = 0;  // laser scans with a part missing
+  RoundTrip round_trip;
   BusState bus = BusState::kActive;
   std::uint8_t board_state = 0;        // the board's own state, as its heartbeat says
   bool board_alive = false;

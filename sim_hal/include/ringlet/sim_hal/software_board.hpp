@@ -59,6 +59,7 @@ class SoftwareBoard {
   bool commanded_ = false;  // a CTRL_DRIVE with enable = 1 has come since the last stop
   hal::can::BoardState state_ = hal::can::BoardState::kReady;
   std::uint8_t heartbeat_counter_ = 0;
+  std::uint8_t drive_counter_ = 0;  // of the last CTRL_DRIVE taken: echoed in BOARD_HEARTBEAT
   std::uint8_t scan_counter_ = 0;
   std::uint16_t faults_ = 0;
   hal::SensorFrame frame_{};

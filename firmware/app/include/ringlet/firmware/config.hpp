@@ -66,6 +66,7 @@ struct MissionSettings {
   std::vector<behaviour::Waypoint> goals;
   double goal_tolerance = 0.3;  // m: a goal counts as reached this close
   double timeout_s = 300.0;     // schedule time before giving up
+  bool ball_tracking = true;    // the BallTracker machine in the schedule (false: no head camera)
 };
 
 /// The deliberative layer ([planner], Powers & Balch §III-B): the occupancy grid and its regions,

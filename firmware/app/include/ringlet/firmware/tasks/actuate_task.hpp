@@ -1,5 +1,7 @@
 #pragma once
-// Whiteboard MotionCommand and HeadCommand → HAL actuators. `stop` means v = 0.
+// Whiteboard MotionCommand and HeadCommand → HAL actuators. `stop` means v = 0. HeadCommand is
+// optional: a robot without ball tracking ([mission] ball_tracking = false) has no machine that
+// points the head, which then holds straight ahead (the default HeadCommand).
 #include <memory>
 
 #include "ringlet/executive/task.hpp"
@@ -12,8 +14,8 @@ namespace ringlet::firmware {
 
 class ActuateTask final : public executive::Task {
  public:
-  static constexpr TaskDeclaration kDeclaration{"actuate", kTypeNames<wb::MotionCommand, wb::HeadCommand>, kNoTypes,
-                                                here()};
+  static constexpr TaskDeclaration kDeclaration{"actuate", kTypeNames<wb::MotionCommand>, kNoTypes, here(),
+                                                kTypeNames<wb::HeadCommand>};
   static constexpr hal::Nanos kModelledCost{3'000};
 
   static std::unique_ptr<executive::Task> make(TaskServices& services);

@@ -17,6 +17,7 @@
 //   malformed frame        counted, ignored (the sensor keeps its last good value and ages)
 //   unknown ID             counted, ignored
 //   socket failure         counted; the socket is reopened every reconnect_period
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -68,6 +69,7 @@ class CanRobot final : public Robot, private Sensors, private Actuators {
   [[nodiscard]] bool in_safe_state() const noexcept override { return safe_.load(std::memory_order_acquire); }
 
   void drain(Nanos now) noexcept;
+  void measure_round_trip(std::uint8_t drive_counter, Nanos now) noexcept;
   void take(const FrameSpec& spec, const Values& v, Nanos now) noexcept;
   /// False (counted as refused, nothing sent) when the values are outside the protocol.
   bool send(const FrameSpec& spec, const Values& v) noexcept;
@@ -94,6 +96,12 @@ class CanRobot final : public Robot, private Sensors, private Actuators {
   std::uint64_t writes_ = 0;
   std::uint8_t drive_counter_ = 0;
   std::uint8_t heartbeat_counter_ = 0;
+  // When each CTRL_DRIVE counter value was last sent (0: not sent, or already measured), and the
+  // round trips seen, in kRoundTripBinUs bins up to kRoundTripBins (the last bin: beyond).
+  static constexpr std::uint32_t kRoundTripBinUs = 250;
+  static constexpr std::size_t kRoundTripBins = 2000;
+  std::array<Nanos, 256> drive_sent_at_{};
+  std::array<std::uint32_t, kRoundTripBins> round_trips_{};
 
   // The latest value of each sensor and when it arrived (0: never).
   SensorFrame latest_{};
