@@ -129,7 +129,7 @@ def main():
     lck = re.search(r"VmLck:\s+(\d+) kB", rt_txt)
     results["realtime"] = {"fifo_threads": len(fifo), "priorities": sorted(set(fifo)),
                            "locked_kB": int(lck.group(1)) if lck else 0}
-    need(50 in fifo, f"the firmware's cycle thread is not SCHED_FIFO 50: {rt_txt.strip()[:300]}")
+    need(fifo == [50], f"not exactly one thread of the firmware (the cycle's) at SCHED_FIFO 50: {rt_txt.strip()[:300]}")
     need(lck and int(lck.group(1)) > 0, "the firmware's memory is not locked (VmLck 0)")
     need("not granted" not in mission_txt and "mlockall failed" not in mission_txt,
          "the firmware warned that its real-time settings were refused")

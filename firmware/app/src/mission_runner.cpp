@@ -106,7 +106,6 @@ std::string signal_name(int signo) {
 
 RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomic<bool>& interrupt, std::ostream& log) {
   const auto& cfg = stack.config();
-  for (const auto& w : executive::apply_realtime_settings(cfg.realtime)) log << "ringlet: warning: " << w << '\n';
 
   auto& exec = stack.executive();
   auto& actuators = stack.robot().actuators();
@@ -130,6 +129,10 @@ RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomi
     }
     {
       Narrator narrator(stack, log, duration_s);
+      // The cycle's thread only, after every other thread has started (the watchdog, the
+      // narrator, the remote bridge's), so that none of them inherits the cycle's SCHED_FIFO
+      // priority or its CPU: a cycle spinning on its CPU leaves the watchdog free to act.
+      for (const auto& w : executive::apply_realtime_settings(cfg.realtime)) log << "ringlet: warning: " << w << '\n';
       outcome.reason = exec.run(stack.frames_for(duration_s));
       if (remote != nullptr) remote->end_run();
     }
