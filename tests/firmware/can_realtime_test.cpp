@@ -59,8 +59,8 @@ using hal::can::CanSocket;
 // sense's p99 is not judged: one activation in ten drains a laser scan (a header and 61 range
 // frames for 181 beams) besides the ~7 frames of every period, so p99 is the cost of a scan's
 // activation, not a disturbed sample. Measured on the 2-core development VM with other builds
-// running (hal/can/README.md, "Timing"): sense p50 24-42 us, p95 125-156 us, p99 180-213 us of its
-// 200 us budget; actuate p99 39 us of 200 us. A scan's activation at the budget is a finding, not
+// running, 20 runs (hal/can/README.md, "Timing"): sense p50 40-55 us, p95 143-188 us, p99 188-234 us
+// of its 200 us budget; actuate p95 21-26 us, p99 29-47 us of 200 us. A scan's activation at the budget is a finding, not
 // noise: it is reported there, not hidden by the statistic.
 constexpr double kJudgedQuantile = 0.95;
 
