@@ -239,6 +239,11 @@ std::shared_ptr<const BackendSettings> read_backend_settings(const std::string& 
   throw ConfigError("robot.backend: no reader for backend \"" + name + "\"");
 }
 
+const hal::can::CanSettings* can_settings(const FirmwareConfig& config) noexcept {
+  if (config.backend != "can" || !config.backend_settings) return nullptr;
+  return &static_cast<const CanBackendSettings&>(*config.backend_settings).can;
+}
+
 std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config) {
   if (config.backend == "sim") return make_sim(config, static_cast<const SimSettings&>(*config.backend_settings));
   if (config.backend == "replay") {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <utility>
 
 #include "ringlet/firmware/backend_factory.hpp"
 #include "ringlet/firmware/contract_check.hpp"
@@ -73,8 +74,12 @@ std::unique_ptr<wb::MessageLogger> make_message_log(const FirmwareConfig& config
 }  // namespace
 
 FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& registry)
+    : FirmwareStack(config, make_robot(config), registry) {}
+
+FirmwareStack::FirmwareStack(const FirmwareConfig& config, std::unique_ptr<hal::Robot> backend,
+                             const TaskRegistry& registry)
     : config_(config),
-      robot_(make_robot(config_)),
+      robot_(std::move(backend)),
       recorder_(make_recorder(config_, *robot_)),
       board_(kWhiteboardGenerations),
       fsm_status_log_(std::make_unique<FsmStatusLog>()),

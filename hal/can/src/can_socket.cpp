@@ -60,32 +60,69 @@ CanSocket CanSocket::adopt(int fd) noexcept {
 }
 
 CanSocket::~CanSocket() { close(); }
-CanSocket::CanSocket(CanSocket&& o) noexcept
-    : fd_(std::exchange(o.fd_, -1)), state_(o.state_), error_frames_(o.error_frames_) {}
+CanSocket::CanSocket(CanSocket&& o) noexcept { move_from(o); }
 CanSocket& CanSocket::operator=(CanSocket&& o) noexcept {
   if (this != &o) {
     close();
-    fd_ = std::exchange(o.fd_, -1);
-    state_ = o.state_;
-    error_frames_ = o.error_frames_;
+    move_from(o);
   }
   return *this;
+}
+void CanSocket::move_from(CanSocket& o) noexcept {
+  fd_ = std::exchange(o.fd_, -1);
+  state_ = o.state_;
+  error_frames_ = o.error_frames_;
+  batch_ = o.batch_;
+  batch_length_ = o.batch_length_;
+  batch_count_ = std::exchange(o.batch_count_, 0);
+  batch_next_ = std::exchange(o.batch_next_, 0);
 }
 void CanSocket::close() noexcept {
   if (fd_ >= 0) ::close(fd_);
   fd_ = -1;
+  batch_count_ = batch_next_ = 0;
+}
+
+bool CanSocket::fill(bool& failed) noexcept {
+  static_assert(sizeof(can_frame) == kFrameBytes);
+  failed = false;
+  std::array<iovec, kBatch> iov{};
+  std::array<mmsghdr, kBatch> msgs{};
+  for (std::size_t i = 0; i < kBatch; ++i) {
+    iov[i] = {batch_[i].data(), kFrameBytes};
+    msgs[i].msg_hdr.msg_iov = &iov[i];
+    msgs[i].msg_hdr.msg_iovlen = 1;
+  }
+  const int n = ::recvmmsg(fd_, msgs.data(), kBatch, MSG_DONTWAIT, nullptr);
+  if (n < 0) {
+    failed = !(errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR);
+    return false;
+  }
+  if (n == 0) {
+    failed = true;  // the peer closed (a socketpair)
+    return false;
+  }
+  for (int i = 0; i < n; ++i) batch_length_[static_cast<std::size_t>(i)] = msgs[static_cast<std::size_t>(i)].msg_len;
+  batch_count_ = static_cast<std::size_t>(n);
+  batch_next_ = 0;
+  return true;
 }
 
 ReceiveStatus CanSocket::receive(RawFrame& out) noexcept {
   if (fd_ < 0) return ReceiveStatus::kFailed;
-  can_frame f{};
-  const ssize_t n = ::recv(fd_, &f, sizeof f, MSG_DONTWAIT);
-  if (n < 0) {
-    if (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR) return ReceiveStatus::kEmpty;
-    return ReceiveStatus::kFailed;
+  if (batch_next_ == batch_count_) {
+    bool failed = false;
+    if (!fill(failed)) return failed ? ReceiveStatus::kFailed : ReceiveStatus::kEmpty;
   }
-  if (n == 0) return ReceiveStatus::kFailed;  // the peer closed (a socketpair)
-  if (static_cast<std::size_t>(n) != sizeof f) return ReceiveStatus::kBadFrame;
+  const std::size_t slot = batch_next_++;
+  const std::uint32_t n = batch_length_[slot];
+  if (n == 0) {
+    batch_count_ = batch_next_ = 0;
+    return ReceiveStatus::kFailed;  // the peer closed (a socketpair)
+  }
+  can_frame f{};
+  std::memcpy(&f, batch_[slot].data(), sizeof f);
+  if (n != sizeof f) return ReceiveStatus::kBadFrame;
   if ((f.can_id & CAN_ERR_FLAG) != 0U) {
     ++error_frames_;
     if ((f.can_id & CAN_ERR_BUSOFF) != 0U) {

@@ -11,6 +11,10 @@
 #include "ringlet/hal/clock.hpp"
 #include "ringlet/hal/robot.hpp"
 
+namespace ringlet::hal::can {
+struct CanSettings;
+}  // namespace ringlet::hal::can
+
 namespace ringlet::firmware {
 
 class Section;
@@ -27,6 +31,10 @@ class Section;
 /// The robot of config.backend. Loads what the backend needs (the world file of "sim"): bad input
 /// is a ConfigError naming the file and the key that named it.
 [[nodiscard]] std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config);
+
+/// The [can] section as read, the settings the "can" backend drives its board with; null unless
+/// robot.backend is "can".
+[[nodiscard]] const hal::can::CanSettings* can_settings(const FirmwareConfig& config) noexcept;
 
 /// The camera [camera] asks for when it is not the robot's own (backend "opencv"), else null.
 [[nodiscard]] std::unique_ptr<hal::Camera> make_camera(const FirmwareConfig& config, const hal::Clock& clock);

@@ -37,6 +37,10 @@ class FirmwareStack {
   /// Builds the robot, the machines, the tasks of the table (from `registry`) and the executive.
   /// Throws ConfigError or executive::TableError on bad input.
   explicit FirmwareStack(const FirmwareConfig& config, const TaskRegistry& registry = production_tasks());
+  /// The same around a robot built elsewhere instead of the backend's (config.backend names what
+  /// it is): e.g. a CanRobot over one end of a socketpair whose other end a software board serves.
+  FirmwareStack(const FirmwareConfig& config, std::unique_ptr<hal::Robot> backend,
+                const TaskRegistry& registry = production_tasks());
   ~FirmwareStack();
   FirmwareStack(const FirmwareStack&) = delete;
   FirmwareStack& operator=(const FirmwareStack&) = delete;
