@@ -47,18 +47,30 @@ void SoftwareBoard::take_commands(hal::Nanos now) noexcept {
   }
 }
 
-void SoftwareBoard::send_laser(const hal::LaserScan& scan) noexcept {
+// A scan goes out over the period it covers, not in one burst: its header at once, then its range
+// frames in equal slices over the next laser_every steps. No controller activation then drains a
+// whole scan (62 frames for 181 beams), and on a real bus the other sensors' frames are not held
+// up behind a burst of eight milliseconds at 1 Mbit/s.
+void SoftwareBoard::start_laser(const hal::LaserScan& scan) noexcept {
+  scan_ = scan;
   ++scan_counter_;
   const double max_range = std::clamp(scan.max_range, 0.1, 25.5);
   send(kLaserHeaderId, values_of({static_cast<double>(scan_counter_), static_cast<double>(scan.beam_count), scan.angle_min,
                                   scan.angle_increment, max_range}));
-  const std::size_t chunks = (scan.beam_count + kBeamsPerChunk - 1) / kBeamsPerChunk;
-  for (std::size_t c = 0; c < chunks; ++c) {
+  scan_chunks_ = (scan.beam_count + kBeamsPerChunk - 1) / kBeamsPerChunk;
+  next_chunk_ = 0;
+}
+
+void SoftwareBoard::send_laser_slice() noexcept {
+  const auto steps = static_cast<std::size_t>(std::max(settings_.laser_every, 1));
+  const std::size_t per_step = (scan_chunks_ + steps - 1) / steps;
+  for (std::size_t n = 0; n < per_step && next_chunk_ < scan_chunks_; ++n, ++next_chunk_) {
+    const std::size_t c = next_chunk_;
     Values v = values_of({static_cast<double>(scan_counter_), static_cast<double>(c)});
     for (std::size_t k = 0; k < kBeamsPerChunk; ++k) {
       const std::size_t beam = c * kBeamsPerChunk + k;
-      const bool seen = beam < scan.beam_count && scan.valid[beam] && scan.range[beam] >= 0.001F;
-      v.v[2 + k] = seen ? static_cast<double>(scan.range[beam]) : 0.0;
+      const bool seen = beam < scan_.beam_count && scan_.valid[beam] && scan_.range[beam] >= 0.001F;
+      v.v[2 + k] = seen ? static_cast<double>(scan_.range[beam]) : 0.0;
       v.present[2 + k] = seen;  // absent: raw 0, nothing seen
     }
     send(kLaserRangesId, v);
@@ -109,7 +121,8 @@ void SoftwareBoard::step(hal::Nanos now) noexcept {
   if (every(settings_.power_every)) {
     send(kPowerId, values_of({std::clamp(frame_.power.battery_volts, 0.0, 65.0), std::clamp(frame_.power.bus_volts, 0.0, 65.0)}));
   }
-  if (every(settings_.laser_every) && frame_.laser.beam_count > 0) send_laser(frame_.laser);
+  if (every(settings_.laser_every) && frame_.laser.beam_count > 0) start_laser(frame_.laser);
+  send_laser_slice();
 }
 
 }  // namespace ringlet::sim_hal

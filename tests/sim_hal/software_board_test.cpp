@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <sys/socket.h>
 
+#include <algorithm>
 #include <memory>
 
 #include "ringlet/hal/can/can_robot.hpp"
@@ -46,6 +47,37 @@ struct Loop {
   std::unique_ptr<SoftwareBoard> board;
   std::unique_ptr<CanRobot> controller;
 };
+
+// A scan leaves the board over the scan's period, not in one burst: the header in the step that
+// takes the scan, then 7 of its 61 range frames per step, every chunk once and in order.
+TEST(SoftwareBoard, ALaserScanIsSpreadOverItsPeriod) {
+  int sv[2];
+  ASSERT_EQ(::socketpair(AF_UNIX, SOCK_SEQPACKET, 0, sv), 0);
+  SimConfig sim;
+  sim.laser_beams = 181;
+  SimRobot car(load_world(RINGLET_SIM_WORLDS_DIR "/courtyard.world"), sim);
+  SoftwareBoard board(car, CanSocket::adopt(sv[1]));
+  CanSocket controller = CanSocket::adopt(sv[0]);
+  hal::VirtualClock clock(hal::Nanos{1'000'000'000});
+  int headers = 0, next_chunk = 0, most_in_a_step = 0;
+  for (int step = 0; step < 10; ++step) {
+    board.step(clock.now());
+    clock.advance(kPeriod);
+    int ranges = 0;
+    hal::can::RawFrame f;
+    while (controller.receive(f) == hal::can::ReceiveStatus::kFrame) {
+      if (f.id == hal::can::kLaserHeaderId) ++headers;
+      if (f.id != hal::can::kLaserRangesId) continue;
+      ++ranges;
+      EXPECT_EQ(f.data[1], next_chunk) << "chunks in order, each once";
+      ++next_chunk;
+    }
+    most_in_a_step = std::max(most_in_a_step, ranges);
+  }
+  EXPECT_EQ(headers, 1);
+  EXPECT_EQ(next_chunk, 61) << "the whole scan within its period";
+  EXPECT_EQ(most_in_a_step, 7);
+}
 
 TEST(SoftwareBoard, TheControllerDrivesTheSimulatedCarThroughTheProtocol) {
   Loop loop;

@@ -8,7 +8,7 @@
 // CTRL_SAFE_STATE latches the car stopped (state 4) until the board restarts. Every step is one
 // period of the simulated world: it takes the commands waiting, runs the watchdog, advances the
 // world, and sends the sensor frames that are due (100 Hz sensors, 10 Hz heartbeat and laser,
-// 1 Hz power).
+// 1 Hz power). A scan's range frames are spread over the steps until the next scan.
 #include <cstdint>
 
 #include "ringlet/hal/can/can_socket.hpp"
@@ -48,7 +48,8 @@ class SoftwareBoard {
   void take_commands(hal::Nanos now) noexcept;
   void send(std::uint32_t id, const hal::can::Values& v) noexcept;
   void send_sensors(const hal::SensorFrame& f) noexcept;
-  void send_laser(const hal::LaserScan& scan) noexcept;
+  void start_laser(const hal::LaserScan& scan) noexcept;
+  void send_laser_slice() noexcept;
 
   SimRobot& robot_;
   hal::can::CanSocket socket_;
@@ -63,6 +64,9 @@ class SoftwareBoard {
   std::uint8_t scan_counter_ = 0;
   std::uint16_t faults_ = 0;
   hal::SensorFrame frame_{};
+  hal::LaserScan scan_{};         // the scan being sent, a slice per step
+  std::size_t scan_chunks_ = 0;
+  std::size_t next_chunk_ = 0;
 };
 
 }  // namespace ringlet::sim_hal
