@@ -297,19 +297,37 @@ void print_and_judge_can_tasks(const executive::Executive& exec) {
   }
 }
 
+// What every RealClockCan test starts from: the courtyard configuration with the CAN backend, the
+// car the board carries, a socket pair, and the firmware stack over the controller's end, whose
+// robot is an ObservedCan. ok() is false when a part could not be made.
+struct CanRig {
+  CanRig() {
+    const hal::can::CanSettings* settings = can_settings(cfg);
+    auto [controller, board] = socket_pair();
+    if (settings == nullptr || car == nullptr || !controller.is_open()) return;
+    board_end = std::move(board);
+    auto robot = std::make_unique<ObservedCan>(*settings, std::move(controller));
+    can = robot.get();
+    stack = std::make_unique<FirmwareStack>(cfg, std::move(robot));
+  }
+  [[nodiscard]] bool ok() const { return stack != nullptr; }
+
+  FirmwareConfig cfg = courtyard("can");
+  std::unique_ptr<sim_hal::SimRobot> car = courtyard_car();
+  CanSocket board_end;
+  ObservedCan* can = nullptr;
+  std::unique_ptr<FirmwareStack> stack;
+};
+
 void run_courtyard_over_can(bool loaded) {
   if (!test::kNativeSpeed) GTEST_SKIP() << "native builds only: a whole mission on the real clock";
-  const FirmwareConfig cfg = courtyard("can");
-  const hal::can::CanSettings* settings = can_settings(cfg);
-  ASSERT_NE(settings, nullptr);
-  auto car = courtyard_car();
-  ASSERT_NE(car, nullptr);
-  auto [controller, board_end] = socket_pair();
-  ASSERT_TRUE(controller.is_open());
-
-  auto robot = std::make_unique<ObservedCan>(*settings, std::move(controller));
-  ObservedCan& can = *robot;
-  FirmwareStack stack(cfg, std::move(robot));
+  CanRig rig;
+  ASSERT_TRUE(rig.ok());
+  const FirmwareConfig& cfg = rig.cfg;
+  auto& car = rig.car;
+  auto& board_end = rig.board_end;
+  ObservedCan& can = *rig.can;
+  FirmwareStack& stack = *rig.stack;
   ASSERT_EQ(stack.robot().backend_name(), "can");
   auto& exec = stack.executive();
 
@@ -364,15 +382,14 @@ TEST(RealClockCan, CourtyardMissionOnALoadedMachine) { run_courtyard_over_can(tr
 // sent any more): the run goes on in the safe state until its end, here 3 s, incomplete.
 TEST(RealClockCan, KillingTheBoardLatchesTheSafeStateWithinTheHeartbeatTimeout) {
   if (!test::kNativeSpeed) GTEST_SKIP() << "native builds only";
-  const FirmwareConfig cfg = courtyard("can");
+  CanRig rig;
+  ASSERT_TRUE(rig.ok());
+  const FirmwareConfig& cfg = rig.cfg;
+  auto& car = rig.car;
+  auto& board_end = rig.board_end;
+  ObservedCan& can = *rig.can;
+  FirmwareStack& stack = *rig.stack;
   const hal::can::CanSettings* settings = can_settings(cfg);
-  ASSERT_NE(settings, nullptr);
-  auto car = courtyard_car();
-  ASSERT_NE(car, nullptr);
-  auto [controller, board_end] = socket_pair();
-  auto robot = std::make_unique<ObservedCan>(*settings, std::move(controller));
-  ObservedCan& can = *robot;
-  FirmwareStack stack(cfg, std::move(robot));
   auto& exec = stack.executive();
   const ringlet::test::CpuHog hog;
   const FifoScope fifo(kFirmwarePriority);
@@ -420,12 +437,12 @@ TEST(RealClockCan, KillingTheBoardLatchesTheSafeStateWithinTheHeartbeatTimeout) 
 // timeout (100 ms) since the last CTRL_DRIVE, and the car comes to rest.
 TEST(RealClockCan, KillingTheFirmwareLetsTheBoardStopTheCarWithinItsCommandTimeout) {
   if (!test::kNativeSpeed) GTEST_SKIP() << "native builds only";
-  const FirmwareConfig cfg = courtyard("can");
-  auto car = courtyard_car();
-  ASSERT_NE(car, nullptr);
-  auto [controller, board_end] = socket_pair();
-  auto robot = std::make_unique<ObservedCan>(*can_settings(cfg), std::move(controller));
-  FirmwareStack stack(cfg, std::move(robot));
+  CanRig rig;
+  ASSERT_TRUE(rig.ok());
+  const FirmwareConfig& cfg = rig.cfg;
+  auto& car = rig.car;
+  auto& board_end = rig.board_end;
+  FirmwareStack& stack = *rig.stack;
   const ringlet::test::CpuHog hog;
   const FifoScope fifo(kFirmwarePriority);
   if (!fifo.ok()) GTEST_SKIP() << "needs SCHED_FIFO (root or CAP_SYS_NICE): see FifoScope";
