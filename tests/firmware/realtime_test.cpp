@@ -12,6 +12,7 @@
 
 #include "cpu_hog.hpp"
 #include "firmware_test_support.hpp"
+#include "reference_work.hpp"
 #include "ringlet/firmware/stack.hpp"
 
 namespace ringlet::firmware {
@@ -30,9 +31,11 @@ constexpr double kJudgedQuantile = 0.95;
 // `p99_tasks`: tasks also judged at p99 (the navigation tasks: their budgets leave a wide margin,
 // and the issue asks for p99).
 // `unjudged`: tasks whose CPU time in this configuration is mostly the simulator's (printed only).
+// `machine`: how much slower this machine runs a fixed piece of work now than when it was quiet
+// (reference_work.hpp); budgets are scaled by it.
 void run_two_seconds_and_check(double quantile, const std::filesystem::path& config = test::kSplConfig,
                                std::initializer_list<std::string_view> p99_tasks = {},
-                               std::initializer_list<std::string_view> unjudged = {}) {
+                               std::initializer_list<std::string_view> unjudged = {}, double machine = 1.0) {
   // By default the main job's stack: camera (render thread) and vision included.
   auto text = test::shipped_config_text(config);
   text = test::with_line(text, "clock", "clock = \"realtime\"");
@@ -48,8 +51,8 @@ void run_two_seconds_and_check(double quantile, const std::filesystem::path& con
   // Every frame number up to the limit was run or slipped (a late last frame may slip a few more).
   EXPECT_GE(frames.frames + frames.slips, kFrames);
   EXPECT_LE(frames.frames, kFrames);
-  const double slowdown = test::kCpuSlowdown;
-  std::printf("real clock, %llu frames (budgets scaled by %.1f, judged at p%g)\n",
+  const double slowdown = test::kCpuSlowdown * machine;
+  std::printf("real clock, %llu frames (budgets scaled by %.2f, judged at p%g)\n",
               static_cast<unsigned long long>(frames.frames), slowdown, quantile * 100);
   for (std::size_t i = 0; i < exec.tasks().size(); ++i) {
     const auto& spec = exec.tasks()[i].spec;
@@ -91,9 +94,27 @@ TEST(RealClock, NavigationInTheWoodsKeepsEveryTaskCpuInsideItsBudget) {
                             {"sense"});
 }
 
+// With a busy thread on every core, at SCHED_IDLE: on the robot the controller owns its CPU
+// (SCHED_FIFO, firmware/deploy) and background work only fills the idle time, so the load here
+// keeps every core busy without keeping the cycle or the camera's render thread waiting. (With
+// hogs on equal terms the render thread starved: 63-77 of the 200 frames ran, vision judged on
+// ~12 real samples.) Busy cores still slow a running thread's own instructions (shared caches,
+// memory bandwidth; on a cloud VM a sibling hyperthread or a neighbour on the physical core), and
+// thread CPU time counts that. So the same fixed work is timed on this thread before and under
+// the load, and the budgets are scaled by the ratio, at most kMaxMachineSlowdown: what is judged
+// is what the load does to the controller (a task spinning while another thread is late, waiting
+// counted as running), not to the hardware. The CI machine once failed this test unscaled, with
+// hogs on equal terms.
+constexpr double kMaxMachineSlowdown = 2.0;
+
 TEST(RealClock, TwoSecondsAt100HzOnALoadedMachine) {
-  const ringlet::test::CpuHog hog;
-  run_two_seconds_and_check(kJudgedQuantile);
+  const double quiet_us = ringlet::test::reference_work_cpu_us();
+  const ringlet::test::CpuHog hog(ringlet::test::CpuHog::Priority::kIdle);
+  const double loaded_us = ringlet::test::reference_work_cpu_us();
+  const double machine = std::clamp(loaded_us / quiet_us, 1.0, kMaxMachineSlowdown);
+  std::printf("reference work: %.1f us quiet, %.1f us loaded: budgets scaled by %.2f (at most %.1f)\n", quiet_us,
+              loaded_us, machine, kMaxMachineSlowdown);
+  run_two_seconds_and_check(kJudgedQuantile, test::kSplConfig, {}, {}, machine);
 }
 
 }  // namespace
