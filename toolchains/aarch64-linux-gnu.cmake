@@ -4,8 +4,9 @@
 #   compilers      g++-aarch64-linux-gnu            (/usr/bin/aarch64-linux-gnu-g++)
 #   C/C++ runtime  /usr/aarch64-linux-gnu           (libc6-arm64-cross, used at link time)
 #   libraries      /usr/lib/aarch64-linux-gnu       (libtomlplusplus-dev:arm64, libgtest-dev:arm64, ...)
-#   header-only    /usr/share/cmake, /usr/share/eigen3/cmake, /usr/include (Eigen3, CLI11,
-#                  nlohmann_json: arch-independent packages, found from the host tree)
+#   header-only    /usr/share/cmake, /usr/share/eigen3/cmake, /usr/share/nanoflann/cmake,
+#                  /usr/include (Eigen3, CLI11, nlohmann_json, nanoflann: arch-independent
+#                  packages, found from the host tree)
 #
 # Binaries run under user-mode qemu: `qemu-aarch64 ./prog`, never with -L (or QEMU_LD_PREFIX):
 # the arm64 dynamic loader and libraries come from the multiarch libc6:arm64 in /lib and

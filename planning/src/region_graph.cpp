@@ -11,17 +11,21 @@ std::string BinaryCostModel::Params::validate() const {
   return {};
 }
 
-double RegionGraph::speed(int v, int k) const noexcept {
-  const int w = neighbour(v, k);
-  if (w < 0) return 0.0;
+RegionTransition RegionGraph::transition(int v, int k) const noexcept {
   RegionTransition t;
   t.from = v;
-  t.to = w;
+  t.to = neighbour(v, k);
   t.from_occupied = v == robot_region_ ? 0 : map_.region_count(v);
-  t.to_occupied = map_.region_count(w);
+  t.to_occupied = t.to < 0 ? 0 : map_.region_count(t.to);
   t.direction = k;
   t.distance = map_.config().region_size() * (is_diagonal(k) ? kSqrt2 : 1.0);
   t.map = &map_;
+  return t;
+}
+
+double RegionGraph::speed(int v, int k) const noexcept {
+  const RegionTransition t = transition(v, k);
+  if (t.to < 0) return 0.0;
   const double s = model_.expected_speed(t);
   return std::isfinite(s) && s > 0.0 ? std::min(s, model_.top_speed()) : 0.0;  // NaN: impassable
 }

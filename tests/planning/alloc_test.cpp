@@ -1,11 +1,13 @@
 // After reserve(), a search, its slices, its repairs and its path allocate nothing; marking the
-// map allocates nothing.
+// map allocates nothing. The learned model's cycle side allocates nothing either: an experience's
+// features, storing an experience up to the reserved capacity, predicting, publishing.
 #include <gtest/gtest.h>
 
 #include <array>
 
 #include "allocation_counter.hpp"
 #include "ringlet/planning/dstar_lite.hpp"
+#include "ringlet/planning/knn_regressor.hpp"
 #include "ringlet/planning/region_graph.hpp"
 
 namespace ringlet::planning {
@@ -36,6 +38,41 @@ TEST(PlanningNoAllocation, SearchRepairAndPathAllocateNothing) {
   EXPECT_EQ(ringlet::test::allocations() - before, 0U);
   EXPECT_GT(n, 0);
   EXPECT_EQ(d.status(), SearchStatus::kReady);
+}
+
+TEST(PlanningNoAllocation, FeaturesAddPredictAndPublishAllocateNothing) {
+  MapConfig c;
+  c.width_cells = 64;
+  c.height_cells = 64;
+  c.region_cells = 8;
+  OccupancyGrid map(c);
+  for (int i = 0; i < 64; ++i) map.mark_cell(i, (i * 7) % 64);
+  const BinaryCostModel model({.max_occupied = 2, .top_speed = 2.0});
+  const RegionGraph graph(map, model);
+  for (const bool weighted : {false, true}) {
+    KnnRegressor knn({.k = KnnRegressor::kMaxK, .distance_weighted = weighted});
+    knn.reserve(2000);
+    for (int i = 0; i < 1000; ++i) {
+      const RegionTransition t = graph.transition(i % graph.vertex_count(), i % kGridDirections);
+      if (t.to >= 0) {
+        ASSERT_TRUE(knn.add(transition_features(t), 0.001 * i));
+      }
+    }
+    ASSERT_TRUE(knn.rebuild());  // off the cycle: allocates
+    double sum = 0.0;
+    const std::uint64_t before = ringlet::test::allocations();
+    ASSERT_TRUE(knn.publish());
+    for (int v = 0; v < graph.vertex_count(); ++v)
+      for (int k = 0; k < kGridDirections; ++k) {
+        const RegionTransition t = graph.transition(v, k);
+        if (t.to < 0) continue;
+        const Features x = transition_features(t);
+        sum += knn.predict(x);
+        (void)knn.add(x, 1.0);
+      }
+    EXPECT_EQ(ringlet::test::allocations() - before, 0U);
+    EXPECT_GT(sum, 0.0);
+  }
 }
 
 }  // namespace

@@ -33,6 +33,9 @@ class RegionGraph final : public GridGraph {
   /// The region the robot is in (−1: none).
   void set_robot_region(int region) noexcept { robot_region_ = region; }
   [[nodiscard]] int robot_region() const noexcept { return robot_region_; }
+  /// The transition from region v one step in direction k, as the cost model sees it (the robot's
+  /// region counts as empty when left); `to` is −1 off the grid. What an experience is built from.
+  [[nodiscard]] RegionTransition transition(int v, int k) const noexcept;
 
  private:
   /// The clamped expected speed from region v one step in direction k (0: impassable).
