@@ -55,6 +55,14 @@ set(CPACK_STRIP_FILES ON)
 # one watches the bus with on the bench.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "iproute2")
+# The cross build's OpenCV comes from the arm64 sysroot (tools/arm64_sysroot.sh), whose files no
+# installed package owns: dpkg-shlibdeps finds them there (-l) but cannot name their packages, so
+# they are named here, the modules the camera links. On the robot apt installs Debian's own.
+if(RINGLET_OPENCV_LIBDIRS)
+  set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${RINGLET_OPENCV_LIBDIRS})
+  string(APPEND CPACK_DEBIAN_PACKAGE_DEPENDS
+         ", libopencv-core406, libopencv-imgproc406, libopencv-imgcodecs406, libopencv-videoio406")
+endif()
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "can-utils, systemd")
 
 # Maintainer scripts (create the user, reload systemd; never start anything) and the conffile.

@@ -22,6 +22,9 @@
 #include "ringlet/firmware/output_file.hpp"
 #include "ringlet/firmware/schedule_report.hpp"
 #include "ringlet/firmware/stack.hpp"
+#ifdef RINGLET_HAVE_OPENCV_CAMERA
+#include "ringlet/firmware/opencv_camera.hpp"
+#endif
 
 namespace {
 
@@ -59,6 +62,13 @@ void install_signal_handlers() {
 }
 
 int signal_exit_code() { return 128 + g_signal.load(); }
+
+// [camera] backend = "opencv": this binary's own, where the build has OpenCV.
+#ifdef RINGLET_HAVE_OPENCV_CAMERA
+constexpr ringlet::firmware::OpenCvCameraMaker kOpenCvCamera = ringlet::firmware::make_opencv_camera;
+#else
+constexpr ringlet::firmware::OpenCvCameraMaker kOpenCvCamera = nullptr;
+#endif
 
 void print_table(const ringlet::firmware::FirmwareConfig& cfg) {
   const double base_hz = 1e9 / static_cast<double>(cfg.executive.period.count());
@@ -137,7 +147,7 @@ int main(int argc, char** argv) {
       cfg.mission.timeout_s = duration;
     }
 
-    firmware::FirmwareStack stack(cfg);
+    firmware::FirmwareStack stack(cfg, firmware::production_tasks(), kOpenCvCamera);
     print_table(cfg);
     if (check_only) {
       std::printf("configuration OK: %s, %s backend (%s)\n", config_path.c_str(), cfg.backend.c_str(),

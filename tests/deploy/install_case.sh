@@ -32,6 +32,12 @@ for f in share/ringlet/can/ringlet_board.dbc share/ringlet/idl/ringlet_wb.idl \
 done
 [[ -f $etc/robot.toml ]] || fail "missing $sysconfdir/ringlet/robot.toml"
 echo "layout: ${#bins[@]} programs, configurations, worlds, DBC, units, robot.toml"
+# Nothing installed points into the build machine (the cross build's build rpath to its sysroot).
+for b in "${bins[@]}"; do
+  rpath=$(readelf -d "$p/bin/$b" | grep -E '\((RPATH|RUNPATH)\)' || true)
+  [[ -z $rpath ]] || fail "installed bin/$b carries an rpath: $rpath"
+done
+echo "no installed program carries an rpath"
 
 run() { "${emulator[@]}" "$p/bin/ringlet" "$@"; }
 run --help | grep -q -- '--realtime' || fail "installed ringlet --help does not list --realtime"

@@ -2,9 +2,9 @@
 # Deploy.DebianPackage: cpack makes the .deb of this build tree; dpkg-deb shows the target's
 # architecture (arm64 from the aarch64 tree, whatever the build host), the dependencies, the
 # maintainer scripts, the conffile and the files a robot needs.
-#   package_case.sh BUILD_DIR WORK_DIR ARCH PREFIX SYSCONFDIR
+#   package_case.sh BUILD_DIR WORK_DIR ARCH PREFIX SYSCONFDIR HAVE_OPENCV
 set -euo pipefail
-build=$1 work=$2 arch=$3 prefix=$4 sysconfdir=$5
+build=$1 work=$2 arch=$3 prefix=$4 sysconfdir=$5 opencv=$6
 
 fail() { printf 'FAIL: %s\n' "$*" >&2; exit 1; }
 rm -rf "$work"
@@ -26,6 +26,11 @@ depends=$(field Depends)
 for d in libc6 libstdc++6 iproute2; do
   grep -q "\b$d\b" <<<"$depends" || fail "Depends lacks $d: $depends"
 done
+# The OpenCV camera's libraries (dpkg-shlibdeps on the host; named by cmake/RingletPackage.cmake
+# for the cross build's sysroot, whose libraries no installed package owns).
+if [[ $opencv == 1 || $opencv == TRUE || $opencv == ON ]]; then
+  grep -q "\blibopencv-videoio406\b" <<<"$depends" || fail "Depends lacks libopencv-videoio406: $depends"
+fi
 [[ -n $(field Maintainer) ]] || fail "no Maintainer"
 for s in postinst prerm postrm conffiles; do grep -q "\b$s\b" <<<"$info" || fail "control lacks $s"; done
 conffiles=$(dpkg-deb --ctrl-tarfile "$deb" | tar -xOf - ./conffiles)

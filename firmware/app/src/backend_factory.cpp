@@ -11,10 +11,6 @@
 #include "ringlet/sim_hal/world.hpp"
 #include "ringlet/sim_hal/world_svg.hpp"
 
-#ifdef RINGLET_HAVE_OPENCV_CAMERA
-#include "ringlet/hal/opencv_camera.hpp"
-#endif
-
 namespace ringlet::firmware {
 namespace {
 
@@ -254,24 +250,14 @@ std::unique_ptr<hal::Robot> make_robot(const FirmwareConfig& config) {
                     "\" is not a backend of this build");
 }
 
-std::unique_ptr<hal::Camera> make_camera(const FirmwareConfig& config, const hal::Clock& clock) {
+std::unique_ptr<hal::Camera> make_camera(const FirmwareConfig& config, const hal::Clock& clock,
+                                         OpenCvCameraMaker opencv_camera) {
   if (config.task("vision") == nullptr || config.camera.backend != "opencv") return nullptr;
-#ifdef RINGLET_HAVE_OPENCV_CAMERA
-  hal::OpenCvCameraConfig c;
-  c.source = config.camera.source;
-  c.width = config.camera.intrinsics.width;
-  c.height = config.camera.intrinsics.height;
-  c.format = config.camera.format;
-  try {
-    return std::make_unique<hal::OpenCvCamera>(c, clock);
-  } catch (const hal::CameraError& e) {
-    throw ConfigError(config.positions.at("camera.source") + ": camera.source: " + e.what());
+  if (opencv_camera == nullptr) {
+    throw ConfigError(config.positions.at("camera.backend") +
+                      ": camera.backend: this program was built without the OpenCV camera");
   }
-#else
-  (void)clock;
-  throw ConfigError(config.positions.at("camera.backend") +
-                    ": camera.backend: this build has no OpenCV camera (OpenCV was not found)");
-#endif
+  return opencv_camera(config, clock);
 }
 
 }  // namespace ringlet::firmware

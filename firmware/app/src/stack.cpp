@@ -73,11 +73,12 @@ std::unique_ptr<wb::MessageLogger> make_message_log(const FirmwareConfig& config
 
 }  // namespace
 
-FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& registry)
-    : FirmwareStack(config, make_robot(config), registry) {}
+FirmwareStack::FirmwareStack(const FirmwareConfig& config, const TaskRegistry& registry,
+                             OpenCvCameraMaker opencv_camera)
+    : FirmwareStack(config, make_robot(config), registry, opencv_camera) {}
 
 FirmwareStack::FirmwareStack(const FirmwareConfig& config, std::unique_ptr<hal::Robot> backend,
-                             const TaskRegistry& registry)
+                             const TaskRegistry& registry, OpenCvCameraMaker opencv_camera)
     : config_(config),
       robot_(std::move(backend)),
       recorder_(make_recorder(config_, *robot_)),
@@ -91,7 +92,7 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, std::unique_ptr<hal::
       safety_(board_, config_.safety.stop_range, config_.safety.release_range, config_.safety.hold_ms),
       fsm_bus_(board_),
       schedule_(stopwatch_, &fsm_bus_),
-      owned_camera_(make_camera(config_, clock())) {
+      owned_camera_(make_camera(config_, clock(), opencv_camera)) {
   // Schedule order is the order of the machines' writes within a turn: Safety runs last, twice,
   // so that the turn that sees an obstacle also posts the stop that stands (safety.machine).
   // The mission is driven by one machine: straight at the goals (Mission), or through the planner

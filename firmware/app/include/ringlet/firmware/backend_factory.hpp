@@ -1,7 +1,9 @@
 #pragma once
-// The one place in firmware/ that knows the backends: it reads each backend's own configuration
-// section ([sim], ...) and builds the robot (and an OpenCV camera) by name. Everything else in the
-// firmware sees only hal::Robot, hal::Camera and hal::GroundTruth.
+// The one place in firmware/ that knows the robot backends: it reads each backend's own
+// configuration section ([sim], ...) and builds the robot by name. Everything else in the firmware
+// sees only hal::Robot, hal::Camera and hal::GroundTruth. The OpenCV camera is not linked here: a
+// program that offers it passes its maker in (firmware/camera_opencv), so that only that program
+// loads OpenCV.
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -36,7 +38,13 @@ class Section;
 /// robot.backend is "can".
 [[nodiscard]] const hal::can::CanSettings* can_settings(const FirmwareConfig& config) noexcept;
 
-/// The camera [camera] asks for when it is not the robot's own (backend "opencv"), else null.
-[[nodiscard]] std::unique_ptr<hal::Camera> make_camera(const FirmwareConfig& config, const hal::Clock& clock);
+/// Makes the camera of [camera] backend "opencv" (ringlet::firmware::make_opencv_camera).
+using OpenCvCameraMaker = std::unique_ptr<hal::Camera> (*)(const FirmwareConfig& config, const hal::Clock& clock);
+
+/// The camera [camera] asks for when it is not the robot's own (backend "opencv", made by
+/// `opencv_camera`), else null. A ConfigError naming camera.backend's file:line:col when the
+/// configuration asks for the OpenCV camera and the program passed no maker.
+[[nodiscard]] std::unique_ptr<hal::Camera> make_camera(const FirmwareConfig& config, const hal::Clock& clock,
+                                                       OpenCvCameraMaker opencv_camera);
 
 }  // namespace ringlet::firmware

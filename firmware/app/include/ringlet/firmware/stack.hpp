@@ -19,6 +19,7 @@
 #include "ringlet/executive/event_log.hpp"
 #include "ringlet/executive/executive.hpp"
 #include "ringlet/executive/spsc_queue.hpp"
+#include "ringlet/firmware/backend_factory.hpp"
 #include "ringlet/firmware/config.hpp"
 #include "ringlet/firmware/experience_log.hpp"
 #include "ringlet/firmware/remote_link.hpp"
@@ -36,12 +37,15 @@ namespace ringlet::firmware {
 class FirmwareStack {
  public:
   /// Builds the robot, the machines, the tasks of the table (from `registry`) and the executive.
-  /// Throws ConfigError or executive::TableError on bad input.
-  explicit FirmwareStack(const FirmwareConfig& config, const TaskRegistry& registry = production_tasks());
+  /// `opencv_camera` makes [camera] backend "opencv" (firmware/camera_opencv): null in a program
+  /// built without it, which then refuses that backend. Throws ConfigError or
+  /// executive::TableError on bad input.
+  explicit FirmwareStack(const FirmwareConfig& config, const TaskRegistry& registry = production_tasks(),
+                         OpenCvCameraMaker opencv_camera = nullptr);
   /// The same around a robot built elsewhere instead of the backend's (config.backend names what
   /// it is): e.g. a CanRobot over one end of a socketpair whose other end a software board serves.
   FirmwareStack(const FirmwareConfig& config, std::unique_ptr<hal::Robot> backend,
-                const TaskRegistry& registry = production_tasks());
+                const TaskRegistry& registry = production_tasks(), OpenCvCameraMaker opencv_camera = nullptr);
   ~FirmwareStack();
   FirmwareStack(const FirmwareStack&) = delete;
   FirmwareStack& operator=(const FirmwareStack&) = delete;
