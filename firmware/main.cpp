@@ -174,6 +174,10 @@ int main(int argc, char** argv) {
       std::cerr << "ringlet: " << problem << '\n';
       log_failed = true;
     }
+    if (!outcome.experiences_error.empty()) {
+      std::cerr << "ringlet: " << outcome.experiences_error << '\n';
+      log_failed = true;
+    }
 
     const bool forced = stack.executive().failsafe_triggered() || outcome.watchdog_fired;
     const auto summary = firmware::summarize(stack, outcome, forced);

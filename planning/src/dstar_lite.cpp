@@ -134,26 +134,36 @@ void DStarLite::vertex_changed(int v) noexcept {
   if (graph_ == nullptr || v < 0 || v >= graph_->vertex_count()) return;
   for (int ring = -1; ring < kGridDirections; ++ring) {
     const int u = ring < 0 ? v : graph_->neighbour(v, ring);
-    if (u < 0 || cached_[static_cast<std::size_t>(u)] == 0) continue;  // never read: nothing relies on it
-    const auto base = static_cast<std::size_t>(u) * kGridDirections;
-    for (int k = 0; k < kGridDirections; ++k) {
-      const Cost c_new = graph_->step_cost(u, k);
-      const Cost c_old = cost_[base + static_cast<std::size_t>(k)];
-      if (c_new == c_old) continue;
-      ++counters_.edge_changes;
-      cost_[base + static_cast<std::size_t>(k)] = c_new;
-      const int w = graph_->neighbour(u, k);
-      if (u != goal_ && w >= 0) {
-        if (c_old > c_new) {
-          rhs_at(u) = std::min(rhs(u), add_cost(c_new, g(w)));
-        } else if (rhs(u) == add_cost(c_old, g(w))) {
-          rhs_at(u) = best_rhs(u);
-        }
-      }
-      update_vertex(u);
-    }
+    if (u >= 0) reread(u);
   }
   status_ = SearchStatus::kSearching;
+}
+
+void DStarLite::edges_changed(int v) noexcept {
+  if (graph_ == nullptr || v < 0 || v >= graph_->vertex_count()) return;
+  reread(v);
+  status_ = SearchStatus::kSearching;
+}
+
+void DStarLite::reread(int u) noexcept {
+  if (cached_[static_cast<std::size_t>(u)] == 0) return;  // never read: nothing relies on it
+  const auto base = static_cast<std::size_t>(u) * kGridDirections;
+  for (int k = 0; k < kGridDirections; ++k) {
+    const Cost c_new = graph_->step_cost(u, k);
+    const Cost c_old = cost_[base + static_cast<std::size_t>(k)];
+    if (c_new == c_old) continue;
+    ++counters_.edge_changes;
+    cost_[base + static_cast<std::size_t>(k)] = c_new;
+    const int w = graph_->neighbour(u, k);
+    if (u != goal_ && w >= 0) {
+      if (c_old > c_new) {
+        rhs_at(u) = std::min(rhs(u), add_cost(c_new, g(w)));
+      } else if (rhs(u) == add_cost(c_old, g(w))) {
+        rhs_at(u) = best_rhs(u);
+      }
+    }
+    update_vertex(u);
+  }
 }
 
 int DStarLite::best_successor(int s) noexcept {

@@ -45,15 +45,13 @@ Features transition_features(const RegionTransition& t) noexcept {
   const MapConfig& c = map.config();
   const double cells = static_cast<double>(c.region_cells) * static_cast<double>(c.region_cells);
   const bool diagonal = is_diagonal(t.direction);
-  const auto& slots = diagonal ? kDiagonalSlots : kStraightSlots;
-  const int turns = t.direction / 2;
   const int fx = t.from % c.regions_x(), fy = t.from / c.regions_x();
 
   Features x{};
   x[kDiagonal] = diagonal ? 1.0 : 0.0;
   for (int i = kFrom; i < kFeatureCount; ++i) {
-    const Offset o = rotate(slots[static_cast<std::size_t>(i)], turns);
-    const int rx = fx + o.x, ry = fy + o.y;
+    const RegionOffset o = feature_offset(t.direction, i);
+    const int rx = fx + o.dx, ry = fy + o.dy;
     int count = c.region_cells * c.region_cells;  // off the map: full
     if (i == kFrom) {
       count = t.from_occupied;
@@ -65,6 +63,12 @@ Features transition_features(const RegionTransition& t) noexcept {
     x[static_cast<std::size_t>(i)] = static_cast<double>(count) / cells;
   }
   return x;
+}
+
+RegionOffset feature_offset(int direction, int slot) noexcept {
+  const auto& slots = is_diagonal(direction) ? kDiagonalSlots : kStraightSlots;
+  const Offset o = rotate(slots[static_cast<std::size_t>(slot)], direction / 2);
+  return {o.x, o.y};
 }
 
 Features mirrored(const Features& x) noexcept {

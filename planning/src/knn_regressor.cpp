@@ -114,10 +114,10 @@ std::size_t KnnRegressor::visible() const noexcept {
   return indexes_[published_.load(std::memory_order_acquire)]->cloud.count;
 }
 
-bool KnnRegressor::rebuild() {
+bool KnnRegressor::rebuild(std::size_t limit) {
   if (rebuilt_ready_.load(std::memory_order_acquire)) return false;
   Index& back = *indexes_[1 - published_.load(std::memory_order_acquire)];
-  back.cloud = PointCloud{points_.data(), stored()};
+  back.cloud = PointCloud{points_.data(), std::min(limit, stored())};
   back.tree.reset();
   if (back.cloud.count > 0)
     back.tree = std::make_unique<Tree>(kFeatureCount, back.cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
@@ -140,7 +140,10 @@ void KnnRegressor::fit(std::span<const Experience> train) {
 }
 
 std::size_t KnnRegressor::neighbours(const Features& x, std::span<Neighbour> out) const noexcept {
-  const Index& index = *indexes_[published_.load(std::memory_order_acquire)];
+  return neighbours_in(*indexes_[published_.load(std::memory_order_acquire)], x, out);
+}
+
+std::size_t KnnRegressor::neighbours_in(const Index& index, const Features& x, std::span<Neighbour> out) const noexcept {
   const std::size_t k = std::min({static_cast<std::size_t>(params_.k), out.size(), index.cloud.count});
   if (k == 0 || !index.tree) return 0;
   RankedNeighbours result(out.first(k), x, index.cloud);
@@ -151,8 +154,17 @@ std::size_t KnnRegressor::neighbours(const Features& x, std::span<Neighbour> out
 }
 
 double KnnRegressor::predict(const Features& x) const noexcept {
+  return predict_in(*indexes_[published_.load(std::memory_order_acquire)], x);
+}
+
+double KnnRegressor::predict_pending(const Features& x) const noexcept {
+  const int published = published_.load(std::memory_order_acquire);
+  return predict_in(*indexes_[pending() ? 1 - published : published], x);
+}
+
+double KnnRegressor::predict_in(const Index& index, const Features& x) const noexcept {
   std::array<Neighbour, kMaxK> found{};
-  const std::size_t n = neighbours(x, found);
+  const std::size_t n = neighbours_in(index, x, found);
   if (n == 0) return params_.prior_speed;
   double sum = 0.0, weights = 0.0;
   for (std::size_t i = 0; i < n; ++i) {

@@ -59,6 +59,30 @@ TEST(NoAllocation, PlannerArbiterAndNavigateAllocateNothing) {
   EXPECT_GT(stack.telemetry().plans()->cells.size(), 100U);
 }
 
+// The learned cost model learning online in P&B's training world: experiences recorded and added,
+// rebuilds requested, new indexes' costs recomputed and switched, D* Lite repaired. The rebuild
+// itself allocates, by design, on its worker thread: the cycle's thread is what is counted (and
+// the counter's own per-thread count is checked to see that worker's allocations).
+TEST(NoAllocation, TheLearnedModelLearningOnlineAllocatesNothingInTheCycle) {
+  const auto text = test::with_line(test::shipped_config_text(test::kShippedConfig.parent_path() / "pb_training.toml"),
+                                    "pops_per_slice", "pops_per_slice = 2000\ncost_model = \"knn\"\nlearn_online = true\npublish_every = 10");
+  const auto cfg = test::parse_as_shipped(text);
+  FirmwareStack stack(cfg);
+  auto& exec = stack.executive();
+  exec.run(1);
+  std::uint64_t cycle = 0, all = 0;
+  {
+    ringlet::test::ThreadAllocationCounter thread;
+    AllocationCounter counter;
+    exec.run(3000);  // 30 s: about 40 experiences, a rebuild every second once they come
+    cycle = thread.count();
+    all = counter.count();
+  }
+  EXPECT_EQ(cycle, 0U) << "operator new was called in the cycle's thread";
+  EXPECT_GT(all, 0U) << "the rebuilds (on the worker thread) allocate: the counter must have seen them";
+  EXPECT_GT(stack.experiences().experiences().size(), 10U);
+}
+
 TEST(NoAllocation, CameraAndVisionAllocateNothingEither) {
   // The main job's stack: the sim camera's render thread and the vision task run as well; the
   // counter sees every thread's allocations. Without [remote]: Cyclone DDS's own threads (and the

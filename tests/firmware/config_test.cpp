@@ -12,15 +12,7 @@ namespace {
 using test::parse_as_shipped;
 using test::shipped_config_text;
 using test::with_line;
-
-std::string error_of(const std::string& text) {
-  try {
-    (void)parse_as_shipped(text);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::error_of;
 
 TEST(FirmwareConfig, ShippedConfigLoads) {
   const auto cfg = load_config(test::kShippedConfig);

@@ -51,4 +51,14 @@ inline FirmwareConfig parse_as_shipped(const std::string& text) {
   return parse_config(text, kShippedConfig.string(), kShippedConfig.parent_path());
 }
 
+/// The ConfigError parse_as_shipped(text) throws, or "(no error)".
+inline std::string error_of(const std::string& text) {
+  try {
+    (void)parse_as_shipped(text);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
 }  // namespace ringlet::firmware::test

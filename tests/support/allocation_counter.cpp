@@ -43,13 +43,19 @@
 namespace {
 
 std::atomic<std::uint64_t> g_allocations{0};
+// Static TLS of the executable (a trivial type): reading it allocates nothing.
+thread_local std::uint64_t t_allocations = 0;
 
-void count() noexcept { g_allocations.fetch_add(1, std::memory_order_relaxed); }
+void count() noexcept {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  ++t_allocations;
+}
 
 }  // namespace
 
 namespace ringlet::test {
 std::uint64_t allocations() noexcept { return g_allocations.load(std::memory_order_relaxed); }
+std::uint64_t thread_allocations() noexcept { return t_allocations; }
 }  // namespace ringlet::test
 
 #ifdef RINGLET_COUNT_WITH_SANITIZER_HOOK

@@ -13,11 +13,25 @@ namespace ringlet::test {
 /// Allocations since the program started, all threads.
 [[nodiscard]] std::uint64_t allocations() noexcept;
 
+/// Allocations made by the calling thread since it started: for a path that must not allocate
+/// while other threads do so by design (a model rebuilt off the cycle).
+[[nodiscard]] std::uint64_t thread_allocations() noexcept;
+
 /// Allocations made while it lives.
 class AllocationCounter {
  public:
   AllocationCounter() noexcept : start_(allocations()) {}
   [[nodiscard]] std::uint64_t count() const noexcept { return allocations() - start_; }
+
+ private:
+  std::uint64_t start_;
+};
+
+/// Allocations made by the constructing thread while it lives (read it on that thread).
+class ThreadAllocationCounter {
+ public:
+  ThreadAllocationCounter() noexcept : start_(thread_allocations()) {}
+  [[nodiscard]] std::uint64_t count() const noexcept { return thread_allocations() - start_; }
 
  private:
   std::uint64_t start_;

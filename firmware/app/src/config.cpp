@@ -172,7 +172,7 @@ void read_follower(Section& follower, behaviour::MoveToWaypointParams& f) {
   follower.reject_unknown();
 }
 
-void read_planner(Section& planner, PlannerSettings& p) {
+void read_planner(Section& planner, PlannerSettings& p, const std::filesystem::path& base_dir) {
   planning::MapConfig& m = p.map;
   m.origin_x = planner.number("origin_x", m.origin_x, -1e5, 1e5);
   m.origin_y = planner.number("origin_y", m.origin_y, -1e5, 1e5);
@@ -190,6 +190,25 @@ void read_planner(Section& planner, PlannerSettings& p) {
   p.cost.max_occupied = planner.integer("max_occupied", p.cost.max_occupied, 0, 65536);
   p.cost.top_speed = planner.number("top_speed", p.cost.top_speed, 0.01, 100.0);
   p.pops_per_slice = planner.integer("pops_per_slice", p.pops_per_slice, 1, 1000000);
+  const bool knn = p.cost_model == CostModelKind::kKnn;
+  p.cost_model = planner.text("cost_model", knn ? "knn" : "binary", {"binary", "knn"}) == "knn" ? CostModelKind::kKnn
+                                                                                               : CostModelKind::kBinary;
+  p.knn.k = planner.integer("k", p.knn.k, 1, planning::KnnRegressor::kMaxK);
+  p.knn.distance_weighted = planner.boolean("distance_weighted", p.knn.distance_weighted);
+  p.knn.prior_speed = p.cost.top_speed;
+  p.wall_occupied = planner.integer("wall_occupied", p.wall_occupied, 0, 65536);
+  p.experiences = planner.path("experiences", base_dir);
+  p.record = planner.path("record", base_dir);
+  p.capacity = planner.integer("capacity", p.capacity, 1, 10000000);
+  p.learn_online = planner.boolean("learn_online", p.learn_online);
+  p.publish_every = planner.integer("publish_every", p.publish_every, 1, 1000000);
+  // The learned model's keys mean nothing to the binary one: a file that sets them while the
+  // binary model plans is probably not what its author thinks it is.
+  if (p.cost_model == CostModelKind::kBinary) {
+    for (const char* key : {"k", "distance_weighted", "wall_occupied", "experiences", "learn_online", "publish_every"}) {
+      if (const toml::node* n = planner.find(key)) planner.fail(*n, key, "applies to cost_model = \"knn\" only");
+    }
+  }
   planner.reject_unknown();
 }
 
@@ -351,7 +370,7 @@ FirmwareConfig parse_config(std::string_view text, const std::string& source, co
   Section safety = in("safety");
   read_safety(safety, cfg.safety);
   Section planner = in("planner");
-  read_planner(planner, cfg.planner);
+  read_planner(planner, cfg.planner, base_dir);
   Section reactive = in("reactive");
   read_reactive(reactive, cfg.reactive);
   Section camera = in("camera");

@@ -11,6 +11,7 @@
 #include "ringlet/executive/realtime.hpp"
 #include "ringlet/executive/report.hpp"
 #include "ringlet/executive/watchdog.hpp"
+#include "ringlet/planning/experience_file.hpp"
 
 namespace ringlet::firmware {
 namespace {
@@ -146,6 +147,18 @@ RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomi
   outcome.interrupted = interrupt.load();
   outcome.schedule_seconds = static_cast<double>(exec.next_frame()) * hal::to_seconds(cfg.executive.period);
   outcome.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  if (!cfg.planner.record.empty()) {
+    const ExperienceLog& experiences = stack.experiences();
+    try {
+      planning::save_experiences(cfg.planner.record, experiences.experiences());
+      outcome.experiences_written = experiences.experiences().size();
+      log << "ringlet: experiences: " << outcome.experiences_written << " written to " << cfg.planner.record.string();
+      if (experiences.dropped() > 0) log << " (" << experiences.dropped() << " more dropped: [planner] capacity is full)";
+      log << '\n';
+    } catch (const planning::ExperienceFileError& e) {
+      outcome.experiences_error = std::string("[planner] record: ") + e.what();
+    }
+  }
   return outcome;
 }
 

@@ -124,8 +124,9 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, std::unique_ptr<hal::
   });
   hal::Robot& robot = this->robot();
   hal::Camera* camera = owned_camera_ ? owned_camera_.get() : robot.camera();
+  if (config_.planner.records()) experiences_.reserve(static_cast<std::size_t>(config_.planner.capacity));
   TaskServices services{config_,         robot,           camera, board_, schedule_, telemetry_, executive_view_,
-                        message_log_.get(), remote_ ? remote_->inbox() : nullptr};
+                        message_log_.get(), remote_ ? remote_->inbox() : nullptr, &experiences_};
   std::vector<executive::TaskBinding> bindings;
   for (std::size_t i = 0; i < table.size(); ++i) {
     tasks_.push_back(table[i]->make(services));

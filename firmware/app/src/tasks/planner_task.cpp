@@ -3,22 +3,67 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ringlet::firmware {
+#include "ringlet/planning/experience_file.hpp"
 
-std::unique_ptr<executive::Task> PlannerTask::make(TaskServices& services) {
-  return std::make_unique<PlannerTask>(services.config.planner, services.board,
-                                       services.config.clock == ClockMode::kRealtime);
+namespace ringlet::firmware {
+namespace {
+
+// Distinct feature vectors remembered per index: a 40 m map of 1 m regions has 12800 edges, most
+// of them alike.
+constexpr std::size_t kMemoCapacity = 4096;
+
+std::unique_ptr<planning::KnnRegressor> make_knn(const PlannerSettings& s, std::span<const planning::Experience> loaded) {
+  if (s.cost_model != CostModelKind::kKnn) return nullptr;
+  auto knn = std::make_unique<planning::KnnRegressor>(s.knn);
+  knn->reserve(loaded.size() + (s.learn_online ? static_cast<std::size_t>(s.capacity) : 0U));
+  for (const planning::Experience& e : loaded) (void)knn->add(e.features, e.achieved_speed);
+  (void)knn->rebuild();
+  (void)knn->publish();
+  return knn;
 }
 
-PlannerTask::PlannerTask(const PlannerSettings& settings, wb::Whiteboard& board, bool realtime_backstop)
+std::unique_ptr<planning::CostModel> make_model(const PlannerSettings& s, planning::KnnRegressor* knn) {
+  if (knn == nullptr) return std::make_unique<planning::BinaryCostModel>(s.cost);
+  return std::make_unique<planning::LearnedCostModel>(
+      *knn, planning::LearnedCostParams{s.cost.top_speed, s.wall_occupied, kMemoCapacity}, s.map);
+}
+
+}  // namespace
+
+std::unique_ptr<executive::Task> PlannerTask::make(TaskServices& services) {
+  const PlannerSettings& p = services.config.planner;
+  std::vector<planning::Experience> loaded;
+  if (!p.experiences.empty()) {
+    try {
+      loaded = planning::load_experiences(p.experiences);
+    } catch (const planning::ExperienceFileError& e) {
+      throw ConfigError(services.config.positions.at("planner.experiences") + ": planner.experiences: " + e.what());
+    }
+  }
+  return std::make_unique<PlannerTask>(p, services.board, services.config.clock == ClockMode::kRealtime,
+                                       services.experiences, loaded);
+}
+
+PlannerTask::PlannerTask(const PlannerSettings& settings, wb::Whiteboard& board, bool realtime, ExperienceLog* log,
+                         std::span<const planning::Experience> loaded)
     : settings_(settings),
       board_(board),
-      realtime_backstop_(realtime_backstop),
+      realtime_(realtime),
+      log_(settings.records() ? log : nullptr),
       map_(settings.map),
-      model_(settings.cost),
-      graph_(map_, model_) {
+      knn_(make_knn(settings, loaded)),
+      model_(make_model(settings, knn_.get())),
+      learned_(dynamic_cast<planning::LearnedCostModel*>(model_.get())),
+      graph_(map_, *model_),
+      recorder_(settings.cost.top_speed) {
   search_.reserve(graph_.vertex_count());
+  if (learned_ != nullptr) {
+    reread_.assign(static_cast<std::size_t>(graph_.vertex_count()), -1);
+    queued_.assign(static_cast<std::size_t>(graph_.vertex_count()), 0);
+  }
   path_.assign(static_cast<std::size_t>(graph_.vertex_count()), -1);
+  if (knn_ && settings.learn_online) worker_ = std::make_unique<planning::RebuildWorker>(*knn_);
+  stored_at_request_ = knn_ ? knn_->stored() : 0;
   plan_.map_origin_x = settings.map.origin_x;
   plan_.map_origin_y = settings.map.origin_y;
   plan_.map_resolution = settings.map.resolution;
@@ -59,7 +104,142 @@ void PlannerTask::integrate_robots(const wb::Pose& pose) noexcept {
     mark(pose.x + d.foot_x[i] * s - d.foot_y[i] * c, pose.y + d.foot_x[i] * c + d.foot_y[i] * s);
 }
 
+void PlannerTask::record(const wb::Pose& pose, int region, const executive::TaskContext& ctx) noexcept {
+  const wb::MotionCommand command = board_.get<wb::MotionCommand>();  // the last frame's, after Safety
+  planning::TransitionSample sample;
+  sample.region = region;
+  sample.x = pose.x;
+  sample.y = pose.y;
+  sample.time_ns = ctx.frame_start.count();
+  sample.frame = ctx.frame;
+  sample.commanded_speed = command.stop ? 0.0 : command.velocity;
+  sample.leg = leg_;
+  planning::Experience e;
+  if (!recorder_.observe(graph_, sample, e)) return;
+  ++recorded_;
+  if (log_ != nullptr) (void)log_->add(e);
+  if (worker_) (void)knn_->add(e.features, e.achieved_speed);
+}
+
+void PlannerTask::forget_changes(int old_robot_region, int robot_region, bool repair) noexcept {
+  if (old_robot_region != robot_region) {
+    learned_->edges_from_changed(old_robot_region);
+    learned_->edges_from_changed(robot_region);
+    if (repair) {
+      queue_reread(old_robot_region);
+      queue_reread(robot_region);
+    }
+  }
+  for (const int r : map_.changed_regions()) {
+    const std::size_t n = learned_->region_changed(r, sources_);
+    if (!repair) continue;
+    for (std::size_t i = 0; i < n; ++i) queue_reread(sources_[i]);
+  }
+  map_.clear_changes();
+  if (!repair) {  // a new search reads every cost afresh
+    for (; reread_count_ > 0; --reread_count_, reread_head_ = (reread_head_ + 1) % reread_.size())
+      queued_[static_cast<std::size_t>(reread_[reread_head_])] = 0;
+  }
+}
+
+void PlannerTask::queue_reread(int v) noexcept {
+  if (v < 0 || queued_[static_cast<std::size_t>(v)] != 0) return;
+  queued_[static_cast<std::size_t>(v)] = 1;
+  reread_[(reread_head_ + reread_count_++) % reread_.size()] = v;  // at most one entry per vertex
+}
+
+std::int64_t PlannerTask::drain(std::int64_t units) noexcept {
+  const std::uint64_t p0 = learned_->predictions();
+  std::int64_t done = 0, spent = 0;
+  while (reread_count_ > 0 && spent < units) {
+    const int v = reread_[reread_head_];
+    reread_head_ = (reread_head_ + 1) % reread_.size();
+    --reread_count_;
+    queued_[static_cast<std::size_t>(v)] = 0;
+    search_.edges_changed(v);
+    ++done;
+    spent = done + static_cast<std::int64_t>(learned_->predictions() - p0) * kPopsPerPrediction;
+  }
+  rereads_ += done;
+  return spent;
+}
+
+std::int64_t PlannerTask::learn(std::int64_t units) noexcept {
+  if (!worker_) return 0;
+  switch (learning_) {
+    case Learning::kIdle:
+      if (activations_ % static_cast<std::uint64_t>(settings_.publish_every) == 0 && knn_->stored() > stored_at_request_) {
+        stored_at_request_ = knn_->stored();
+        requested_at_ = activations_;
+        worker_->request(stored_at_request_);
+        learning_ = Learning::kRebuilding;
+      }
+      return 0;
+    case Learning::kRebuilding:
+      // Lockstep: exactly the activation after the request, waiting for the worker if the host is
+      // slow (virtual time stands still meanwhile). The real clock never waits.
+      if (realtime_ && !worker_->idle()) return 0;
+      worker_->wait_idle();
+      (void)learned_->begin_refresh();
+      learning_ = Learning::kRefreshing;
+      break;
+    case Learning::kRefreshing:
+      break;
+  }
+  // Half the slice at most: the search goes on meanwhile, with the old costs. A prediction is
+  // kPopsPerPrediction units, an edge visited kCostPerRefreshEdge / kCostPerPop.
+  const std::int64_t share = std::max<std::int64_t>(units / 2, kPopsPerPrediction);
+  const std::int64_t edges_per_unit = kCostPerPop / kCostPerRefreshEdge;
+  const std::uint64_t p0 = learned_->predictions(), e0 = learned_->refresh_edges();
+  const bool done = learned_->refresh(graph_, share / kPopsPerPrediction, share * edges_per_unit);
+  std::int64_t spent = static_cast<std::int64_t>(learned_->predictions() - p0) * kPopsPerPrediction +
+                       static_cast<std::int64_t>(learned_->refresh_edges() - e0) / edges_per_unit;
+  if (done) {
+    const std::uint64_t p1 = learned_->predictions();
+    for (const int v : learned_->finish_refresh()) queue_reread(v);  // re-read under later budgets
+    switched_ = static_cast<std::int64_t>(learned_->edge_count());
+    spent += static_cast<std::int64_t>(learned_->predictions() - p1) * kPopsPerPrediction;
+    ++publishes_;
+    learning_ = Learning::kIdle;
+  }
+  return spent;
+}
+
+planning::SearchStatus PlannerTask::search(const executive::TaskContext& ctx, std::int64_t units) noexcept {
+  planning::SearchStatus status = search_.status();
+  if (learned_ == nullptr) {
+    std::int64_t left = units;
+    while (left > 0) {
+      const std::int64_t chunk = std::min<std::int64_t>(left, 64);
+      status = search_.step(chunk);
+      left -= chunk;
+      if (status != planning::SearchStatus::kSearching) break;
+      if (realtime_ && ctx.out_of_time()) break;  // the real clock's backstop only
+    }
+    return status;
+  }
+  // Pop by pop: a pop may make predictions (up to 64, typically none or a few: the memo), and the
+  // slice ends while a pop's usual predictions still fit.
+  const std::int64_t pops0 = search_.counters().pops;
+  const std::uint64_t predictions0 = learned_->predictions();
+  for (std::int64_t n = 0;; ++n) {
+    const std::int64_t spent = (search_.counters().pops - pops0) +
+                               static_cast<std::int64_t>(learned_->predictions() - predictions0) * kPopsPerPrediction;
+    if (spent + kPopReserve >= units) break;  // room left for the predictions of one more pop
+    status = search_.step(1);
+    if (status != planning::SearchStatus::kSearching) break;
+    if (realtime_ && n % 64 == 63 && ctx.out_of_time()) break;
+  }
+  return status;
+}
+
 void PlannerTask::run(const executive::TaskContext& ctx) noexcept {
+  ++activations_;
+  recorded_ = 0;
+  switched_ = 0;
+  rereads_ = 0;
+  const std::uint64_t predictions_before = learned_ ? learned_->predictions() : 0;
+  const std::uint64_t refresh_before = learned_ ? learned_->refresh_edges() : 0;
   const wb::Pose pose = board_.get<wb::Pose>();
   const wb::MissionStatus mission = board_.get<wb::MissionStatus>();
   scan_ = board_.get<wb::LaserScan>();
@@ -75,21 +255,28 @@ void PlannerTask::run(const executive::TaskContext& ctx) noexcept {
 
   if (!pose.valid || mission.goal_count == 0 || mission.done) {
     searching_goal_ = false;
+    recorder_.reset();
+    (void)learn(settings_.pops_per_slice);
     post_plan(planning::SearchStatus::kIdle, mission);
   } else if (start < 0 || goal < 0) {
     searching_goal_ = false;  // the robot or the target lies outside the map: no way to plan
+    recorder_.reset();
+    (void)learn(settings_.pops_per_slice);
     post_plan(planning::SearchStatus::kUnreachable, mission);
   } else {
     const bool new_goal = !searching_goal_ || mission.target_x != plan_.goal_x || mission.target_y != plan_.goal_y;
+    if (new_goal) ++leg_;
     const int old_start = graph_.robot_region();
     graph_.set_robot_region(start);
+    if (settings_.records()) record(pose, start, ctx);
     if (new_goal) {
+      if (learned_) forget_changes(old_start, start, false);
       search_.begin(graph_, start, goal);
       searching_goal_ = true;
       plan_.has_plan = false;
       plan_.replans = 0;
       map_.clear_changes();
-    } else {
+    } else if (learned_ == nullptr) {
       if (start != search_.start()) {
         search_.move_start(start);
         search_.vertex_changed(old_start);  // its own count counts again
@@ -100,20 +287,27 @@ void PlannerTask::run(const executive::TaskContext& ctx) noexcept {
         map_.clear_changes();
         if (plan_.has_plan) ++plan_.replans;
       }
+    } else {
+      if (start != search_.start()) search_.move_start(start);
+      const bool changed = !map_.changed_regions().empty();
+      forget_changes(old_start, start, true);
+      if (changed && plan_.has_plan) ++plan_.replans;
     }
-    planning::SearchStatus status = search_.status();
-    std::int64_t left = settings_.pops_per_slice;
-    while (left > 0) {
-      const std::int64_t chunk = std::min<std::int64_t>(left, 64);
-      status = search_.step(chunk);
-      left -= chunk;
-      if (status != planning::SearchStatus::kSearching) break;
-      if (realtime_backstop_ && ctx.out_of_time()) break;  // the real clock's backstop only
+    std::int64_t units = settings_.pops_per_slice;
+    if (learned_ != nullptr) {
+      units -= drain(units);
+      units -= learn(units);
     }
-    post_plan(status, mission);
+    const bool stale = learned_ != nullptr && reread_count_ > 0;
+    post_plan(stale ? planning::SearchStatus::kSearching : search(ctx, units), mission);
   }
   const std::int64_t pops = search_.counters().pops - pops_before;
-  cost_ = kBaseCost + kCostPerBeam * beams + kCostPerPop * pops;
+  cost_ = kBaseCost + kCostPerBeam * beams + kCostPerPop * pops + kCostPerExperience * recorded_;
+  if (learned_) {
+    cost_ += kCostPerPrediction * static_cast<std::int64_t>(learned_->predictions() - predictions_before) +
+             kCostPerRefreshEdge * static_cast<std::int64_t>(learned_->refresh_edges() - refresh_before) +
+             kCostPerSwitchedEdge * switched_ + kCostPerPop * rereads_;
+  }
 }
 
 void PlannerTask::post_plan(planning::SearchStatus status, const wb::MissionStatus& mission) noexcept {

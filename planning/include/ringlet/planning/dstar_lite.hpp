@@ -50,6 +50,10 @@ class DStarLite {
   /// Step costs out of `v` or out of any of its 8 neighbours may have changed (a region's
   /// occupancy changed): re-reads them and repairs what depends on them.
   void vertex_changed(int v) noexcept;
+  /// The step costs out of `v` (only) may have changed: re-reads them and repairs. For cost models
+  /// whose edges read more than the two regions they join (the learned one), the caller names
+  /// every vertex whose steps read a changed region.
+  void edges_changed(int v) noexcept;
 
   [[nodiscard]] SearchStatus status() const noexcept { return status_; }
   [[nodiscard]] int start() const noexcept { return start_; }
@@ -79,6 +83,8 @@ class DStarLite {
   [[nodiscard]] int best_successor(int s) noexcept;
   [[nodiscard]] bool search_done() const noexcept;
   void update_vertex(int u) noexcept;
+  /// Re-reads u's step costs, if they were ever read, and repairs rhs(u) for the changed ones.
+  void reread(int u) noexcept;
   [[nodiscard]] Cost& g_at(int v) noexcept { return g_[static_cast<std::size_t>(v)]; }
   [[nodiscard]] Cost& rhs_at(int v) noexcept { return rhs_[static_cast<std::size_t>(v)]; }
 

@@ -67,6 +67,14 @@ inline constexpr std::array<std::string_view, kFeatureCount> kFeatureNames{
 /// The features of transition `t` (its map must be set; `to` on the grid). No allocation.
 [[nodiscard]] Features transition_features(const RegionTransition& t) noexcept;
 
+/// Where feature slot `slot` (kFrom ... kCornerRight) of a transition in grid direction
+/// `direction` looks, as a region offset (dx, dy) from `from` in the map's frame: the region whose
+/// count the slot reads. A cache of predictions uses it to find every edge a changed region feeds.
+struct RegionOffset {
+  int dx = 0, dy = 0;
+};
+[[nodiscard]] RegionOffset feature_offset(int direction, int slot) noexcept;
+
 /// The features of the mirror image of the situation (reflected across the travel axis): every
 /// left slot swapped with its right slot.
 [[nodiscard]] Features mirrored(const Features& x) noexcept;
@@ -85,10 +93,10 @@ inline constexpr std::array<std::string_view, kFeatureCount> kFeatureNames{
 /// One recorded transition: what the planner expected and what the reactive layer achieved.
 struct Experience {
   Features features{};
-  double commanded_speed = 0.0;  // m/s: the cost model's expected speed when the plan was made
+  double commanded_speed = 0.0;  // m/s: the mean speed the reactive layer commanded over the transition
   double achieved_speed = 0.0;   // m/s: m_c, the average speed over the transition (the label)
-  double duration_s = 0.0;       // s from leaving `from`'s waypoint to reaching `to`'s
-  std::uint64_t frame = 0;       // the executive's frame in which the waypoint was reached
+  double duration_s = 0.0;       // s from entering `from` to entering `to`
+  std::uint64_t frame = 0;       // the executive's frame in which `to` was entered
   std::int64_t time_ns = 0;      // the robot's time at that frame
 
   friend bool operator==(const Experience&, const Experience&) = default;

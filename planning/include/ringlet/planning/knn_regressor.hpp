@@ -72,12 +72,18 @@ class KnnRegressor final : public SpeedLearner {
   [[nodiscard]] std::size_t stored() const noexcept { return stored_.load(std::memory_order_acquire); }
   [[nodiscard]] std::size_t visible() const noexcept;
 
-  /// Builds the unpublished index over every stored experience (allocates). False when the last
-  /// rebuild is still waiting for publish().
-  bool rebuild();
+  /// Builds the unpublished index over the first `limit` stored experiences (all of them by
+  /// default; allocates). False when the last rebuild is still waiting for publish(). A limit
+  /// chosen by the cycle makes the index the same whenever the rebuild happens to run.
+  bool rebuild(std::size_t limit = static_cast<std::size_t>(-1));
   /// Makes the last rebuild() the index predictions use; false when none is ready. O(1), no
   /// allocation, nothing freed.
   bool publish() noexcept;
+  /// Whether a rebuilt index waits for publish().
+  [[nodiscard]] bool pending() const noexcept { return rebuilt_ready_.load(std::memory_order_acquire); }
+  /// The prediction the waiting index will give once published (the published one's while none
+  /// waits): a cost model recomputes its cached costs with it before it switches. No allocation.
+  [[nodiscard]] double predict_pending(const Features& x) const noexcept;
 
   /// reserve(max(capacity(), train.size())), add every experience, rebuild, publish.
   void fit(std::span<const Experience> train) override;
@@ -88,6 +94,8 @@ class KnnRegressor final : public SpeedLearner {
 
  private:
   struct Index;
+  [[nodiscard]] std::size_t neighbours_in(const Index& index, const Features& x, std::span<Neighbour> out) const noexcept;
+  [[nodiscard]] double predict_in(const Index& index, const Features& x) const noexcept;
 
   KnnParams params_;
   std::vector<double> points_;  // capacity × kFeatureCount, row-major; never reallocated

@@ -20,6 +20,8 @@
 #include "ringlet/hal/camera.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/planning/cost_model.hpp"
+#include "ringlet/planning/knn_regressor.hpp"
+#include "ringlet/planning/learned_cost_model.hpp"
 #include "ringlet/planning/occupancy_grid.hpp"
 
 namespace ringlet::firmware {
@@ -69,12 +71,26 @@ struct MissionSettings {
   bool ball_tracking = true;    // the BallTracker machine in the schedule (false: no head camera)
 };
 
-/// The deliberative layer ([planner], Powers & Balch §III-B): the occupancy grid and its regions,
-/// the binary cost model, and the work one activation of the planner task may do.
+enum class CostModelKind { kBinary, kKnn };
+
+/// The deliberative layer ([planner], Powers & Balch §III-B, §III-C): the occupancy grid and its
+/// regions, the cost model (the binary baseline or the learned kNN one), the work one activation
+/// of the planner task may do, and the experiences it loads, records and learns from.
 struct PlannerSettings {
   planning::MapConfig map{};
   planning::BinaryCostModel::Params cost{};
   int pops_per_slice = 2000;  // D* Lite queue pops per activation (the deterministic slice)
+  CostModelKind cost_model = CostModelKind::kBinary;
+  planning::KnnParams knn{};            // k, distance_weighted (prior_speed: top_speed)
+  int wall_occupied = 3;                // the learned model's wall rule (learned_cost_model.hpp)
+  std::filesystem::path experiences;    // loaded at start (empty: none)
+  std::filesystem::path record;         // this mission's experiences, written at its end (empty: none)
+  int capacity = 10000;                 // experiences this mission may record
+  bool learn_online = false;            // recorded experiences join the model during the mission
+  int publish_every = 100;              // planner activations between rebuild requests (online)
+
+  /// Whether the planner task records experiences at all.
+  [[nodiscard]] bool records() const noexcept { return !record.empty() || learn_online; }
 };
 
 /// One backend's own section ([sim], ...), read and used by the backend factory only.

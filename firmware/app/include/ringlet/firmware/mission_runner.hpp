@@ -26,12 +26,15 @@ struct RunOutcome {
   bool watchdog_fired = false;
   double schedule_seconds = 0;  // frames run × period
   double wall_seconds = 0;      // how long it took on the host
+  std::size_t experiences_written = 0;  // [planner] record: experiences written to the file
+  std::string experiences_error;        // why they could not be written (empty: written, or none asked for)
 };
 
 /// Runs at most `duration_s` of schedule time or until the mission ends or the executive's stop
 /// flag is set (the signal handler sets it together with `interrupt`, which the watchdog watches
 /// to command the safe state at once even if the cycle is stuck). Ends in the safe state.
-/// Warnings and events go to `log`.
+/// Warnings and events go to `log`. Then, off the cycle, writes the experiences the planner recorded
+/// to [planner] record (whole, atomically: a temporary file renamed over it).
 RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomic<bool>& interrupt, std::ostream& log);
 
 }  // namespace ringlet::firmware

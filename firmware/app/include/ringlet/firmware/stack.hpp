@@ -21,6 +21,7 @@
 #include "ringlet/executive/spsc_queue.hpp"
 #include "ringlet/firmware/backend_factory.hpp"
 #include "ringlet/firmware/config.hpp"
+#include "ringlet/firmware/experience_log.hpp"
 #include "ringlet/firmware/remote_link.hpp"
 #include "ringlet/firmware/task_registry.hpp"
 #include "ringlet/firmware/telemetry.hpp"
@@ -70,6 +71,9 @@ class FirmwareStack {
   /// The run scored against ground truth, when there is any, else null.
   [[nodiscard]] const TruthScore* truth_score() const noexcept { return truth_score_ ? &*truth_score_ : nullptr; }
 
+  /// The experiences the planner recorded in this run ([planner] record, learn_online).
+  [[nodiscard]] const ExperienceLog& experiences() const noexcept { return experiences_; }
+
   /// The whiteboard on DDS ([remote] enabled), else null.
   [[nodiscard]] RemoteLink* remote() noexcept { return remote_.get(); }
   [[nodiscard]] const RemoteLink* remote() const noexcept { return remote_.get(); }
@@ -93,6 +97,7 @@ class FirmwareStack {
   std::uint64_t fsm_status_seen_ = 0;
   std::unique_ptr<wb::MessageLogger> message_log_;  // --wb-log
   Telemetry telemetry_;
+  ExperienceLog experiences_;
   behaviour::machines::BallTracker ball_tracker_;
   behaviour::machines::Mission mission_machine_;
   behaviour::machines::Navigate navigate_machine_;  // scheduled instead of Mission with [mission] drive = "navigate"

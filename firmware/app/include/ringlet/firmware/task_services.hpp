@@ -7,6 +7,7 @@
 #include "ringlet/behaviour/llfsm/schedule.hpp"
 #include "ringlet/executive/task.hpp"
 #include "ringlet/firmware/config.hpp"
+#include "ringlet/firmware/experience_log.hpp"
 #include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/hal/robot.hpp"
 #include "ringlet/remote/inbox.hpp"
@@ -33,6 +34,8 @@ struct TaskServices {
   /// [remote] accept: the remote writes the bridge accepted, delivered by the whiteboard task before
   /// its dispatch (null when nothing remote may write).
   remote::Inbox* remote_inbox = nullptr;
+  /// The experiences the planner records ([planner] record, learn_online); written after the run.
+  ExperienceLog* experiences = nullptr;
 };
 
 }  // namespace ringlet::firmware
