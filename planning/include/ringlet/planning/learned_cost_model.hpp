@@ -11,9 +11,9 @@
 // (a tree's visible face); a wall crossing a region marks a line of cells. Between the two limits
 // the model decides.
 //
-// Caches. A kNN query costs 6-27 us and a D* Lite pop may read 64 step costs, so predictions are
-// kept per edge (region x 8 directions, sized at start-up) and memoized by feature vector (most
-// edges share theirs). The per-edge cache is invalidated precisely by the caller:
+// Caches. A kNN query costs 10-21 us at n = 5000 (tests/bench/bench_planning.cpp) and a D* Lite
+// pop may read 64 step costs, so predictions are kept per edge (region x 8 directions, sized at
+// start-up) and memoized by feature vector (most edges share theirs). The per-edge cache is invalidated precisely by the caller:
 //   - region_changed(r): every edge whose features read region r (the feature window around both
 //     ends: feature_offset()), whatever its direction; it also names the edges' source vertices,
 //     which D* Lite must re-read (DStarLite::edges_changed);

@@ -62,10 +62,10 @@ class PlannerTask final : public executive::Task {
   static constexpr hal::Nanos kBaseCost{20'000};
   static constexpr hal::Nanos kCostPerBeam{100};
   static constexpr hal::Nanos kCostPerPop{800};
-  /// The learned model's work: a kNN query (k = 5 over 5000 experiences: 6-27 us on the desktop,
-  /// planning/README.md; the upper end for the board), an edge visited by the refresh after a
-  /// publish (its features and a memo probe), the sweep that switches every cached edge, and an
-  /// experience recorded (its features).
+  /// The learned model's work: a kNN query (k = 5 over 5000 experiences: 10-21 us of CPU on the
+  /// desktop, ringlet_bench_planning, planning/README.md; the upper end), an edge visited by the
+  /// refresh after a publish (its features and a memo probe), the sweep that switches every cached
+  /// edge, and an experience recorded (its features).
   static constexpr hal::Nanos kCostPerPrediction{20'000};
   static constexpr hal::Nanos kCostPerRefreshEdge{400};
   static constexpr hal::Nanos kCostPerSwitchedEdge{10};
