@@ -38,6 +38,17 @@ for b in "${bins[@]}"; do
   [[ -z $rpath ]] || fail "installed bin/$b carries an rpath: $rpath"
 done
 echo "no installed program carries an rpath"
+# The OpenCV camera's module, where the binary looks for it (../lib/ringlet/ from bin/), with its
+# entry point and no rpath either.
+if [[ $opencv == 1 || $opencv == TRUE || $opencv == ON ]]; then
+  module=$p/lib/ringlet/ringlet_camera_opencv.so
+  [[ -f $module ]] || fail "missing lib/ringlet/ringlet_camera_opencv.so (the OpenCV camera's module)"
+  readelf -W --dyn-syms "$module" | grep -q ' ringlet_open_opencv_camera$' || fail "the module lacks ringlet_open_opencv_camera"
+  rpath=$(readelf -d "$module" | grep -E '\((RPATH|RUNPATH)\)' || true)
+  [[ -z $rpath ]] || fail "the installed camera module carries an rpath: $rpath"
+  if readelf -d "$p/bin/ringlet" | grep -q 'NEEDED.*libopencv'; then fail "bin/ringlet links OpenCV (it must load the module)"; fi
+  echo "the camera module is in lib/ringlet, without an rpath; bin/ringlet does not link OpenCV"
+fi
 
 run() { "${emulator[@]}" "$p/bin/ringlet" "$@"; }
 run --help | grep -q -- '--realtime' || fail "installed ringlet --help does not list --realtime"

@@ -1,4 +1,4 @@
-# Shared by the shell test cases (signal_case.sh, output_failure_case.sh): `fail MESSAGE` prints
+# Shared by the shell test cases (signal_case.sh, output_failure_case.sh, camera_module_case.sh): `fail MESSAGE` prints
 # the message and what the binary printed (from $work/stdout and $work/stderr), then exits 1.
 fail() {
   echo "FAIL: $*"

@@ -9,8 +9,10 @@
 
 namespace ringlet::firmware {
 
-/// Opens camera.source with the configured size and format; a source that cannot be opened is a
-/// ConfigError naming camera.source's file:line:col. `clock` stamps the frames.
+/// Loads the OpenCV camera module (opencv_camera_plugin.hpp) and opens camera.source with the
+/// configured size and format. A module that cannot be loaded is a ConfigError naming
+/// camera.backend's file:line:col and the module's path; a source that cannot be opened, one
+/// naming camera.source's. `clock` stamps the frames.
 [[nodiscard]] std::unique_ptr<hal::Camera> make_opencv_camera(const FirmwareConfig& config, const hal::Clock& clock);
 
 }  // namespace ringlet::firmware
