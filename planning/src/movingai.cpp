@@ -82,6 +82,14 @@ MovingAiMap read_movingai_map(const std::filesystem::path& path) {
   return m;
 }
 
+void write_movingai_map(std::ostream& out, const MovingAiMap& m) {
+  out << "type octile\nheight " << m.height << "\nwidth " << m.width << "\nmap\n";
+  for (int y = 0; y < m.height; ++y) {
+    out.write(m.terrain.data() + static_cast<std::ptrdiff_t>(y) * m.width, m.width);
+    out << '\n';
+  }
+}
+
 std::vector<MovingAiProblem> read_movingai_scen(const std::filesystem::path& path) {
   std::ifstream in = open(path);
   std::string text;

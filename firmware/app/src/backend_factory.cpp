@@ -7,6 +7,7 @@
 #include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/hal/replay_robot.hpp"
 #include "ringlet/sim_hal/collision.hpp"
+#include "ringlet/sim_hal/world_raster.hpp"
 #include "ringlet/sim_hal/sim_robot.hpp"
 #include "ringlet/sim_hal/world.hpp"
 #include "ringlet/sim_hal/world_svg.hpp"
@@ -233,6 +234,26 @@ std::shared_ptr<const BackendSettings> read_backend_settings(const std::string& 
   if (name == "replay") return read_replay(section, base_dir, so_far);
   if (name == "can") return read_can(section, so_far);
   throw ConfigError("robot.backend: no reader for backend \"" + name + "\"");
+}
+
+planning::MovingAiMap sim_world_map(const FirmwareConfig& config) {
+  if (config.backend != "sim" || !config.backend_settings) {
+    throw ConfigError(config.positions.at("robot.backend") + ": robot.backend: \"" + config.backend +
+                      "\", not \"sim\": there is no world to map");
+  }
+  const auto& settings = static_cast<const SimSettings&>(*config.backend_settings);
+  const planning::MapConfig& map = config.planner.map;
+  const std::vector<std::uint8_t> blocked = sim_hal::blocked_cells(
+      load_world_of(config, settings), {map.origin_x, map.origin_y, map.resolution, map.width_cells, map.height_cells});
+  planning::MovingAiMap m;
+  m.width = map.width_cells;
+  m.height = map.height_cells;
+  m.terrain.reserve(blocked.size());
+  for (int row = 0; row < m.height; ++row) {
+    const std::size_t south_row = static_cast<std::size_t>(m.height - 1 - row) * static_cast<std::size_t>(m.width);
+    for (int x = 0; x < m.width; ++x) m.terrain.push_back(blocked[south_row + static_cast<std::size_t>(x)] != 0 ? '@' : '.');
+  }
+  return m;
 }
 
 const hal::can::CanSettings* can_settings(const FirmwareConfig& config) noexcept {

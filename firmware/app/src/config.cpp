@@ -198,6 +198,7 @@ void read_planner(Section& planner, PlannerSettings& p, const std::filesystem::p
   p.knn.prior_speed = p.cost.top_speed;
   p.wall_occupied = planner.integer("wall_occupied", p.wall_occupied, 0, 65536);
   p.experiences = planner.path("experiences", base_dir);
+  p.prior_map = planner.path("prior_map", base_dir);
   p.record = planner.path("record", base_dir);
   p.capacity = planner.integer("capacity", p.capacity, 1, 10000000);
   p.learn_online = planner.boolean("learn_online", p.learn_online);

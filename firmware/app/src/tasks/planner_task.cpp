@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "ringlet/planning/experience_file.hpp"
+#include "ringlet/planning/movingai.hpp"
 
 namespace ringlet::firmware {
 namespace {
@@ -40,12 +43,27 @@ std::unique_ptr<executive::Task> PlannerTask::make(TaskServices& services) {
       throw ConfigError(services.config.positions.at("planner.experiences") + ": planner.experiences: " + e.what());
     }
   }
+  std::optional<planning::MovingAiMap> prior;
+  if (!p.prior_map.empty()) {
+    const std::string where = services.config.positions.at("planner.prior_map") + ": planner.prior_map: ";
+    try {
+      prior = planning::read_movingai_map(p.prior_map);
+    } catch (const planning::MovingAiError& e) {
+      throw ConfigError(where + e.what());
+    }
+    if (prior->width != p.map.width_cells || prior->height != p.map.height_cells) {
+      throw ConfigError(where + p.prior_map.string() + " is " + std::to_string(prior->width) + " x " +
+                        std::to_string(prior->height) + " cells, the planner's grid " +
+                        std::to_string(p.map.width_cells) + " x " + std::to_string(p.map.height_cells) +
+                        " (width_cells x height_cells)");
+    }
+  }
   return std::make_unique<PlannerTask>(p, services.board, services.config.clock == ClockMode::kRealtime,
-                                       services.experiences, loaded);
+                                       services.experiences, loaded, prior ? &*prior : nullptr);
 }
 
 PlannerTask::PlannerTask(const PlannerSettings& settings, wb::Whiteboard& board, bool realtime, ExperienceLog* log,
-                         std::span<const planning::Experience> loaded)
+                         std::span<const planning::Experience> loaded, const planning::MovingAiMap* prior)
     : settings_(settings),
       board_(board),
       realtime_(realtime),
@@ -56,6 +74,7 @@ PlannerTask::PlannerTask(const PlannerSettings& settings, wb::Whiteboard& board,
       learned_(dynamic_cast<planning::LearnedCostModel*>(model_.get())),
       graph_(map_, *model_),
       recorder_(settings.cost.top_speed) {
+  if (prior != nullptr) mark_prior(*prior);
   search_.reserve(graph_.vertex_count());
   if (learned_ != nullptr) {
     reread_.assign(static_cast<std::size_t>(graph_.vertex_count()), -1);
@@ -69,6 +88,17 @@ PlannerTask::PlannerTask(const PlannerSettings& settings, wb::Whiteboard& board,
   plan_.map_resolution = settings.map.resolution;
   plan_.map_width = static_cast<std::uint16_t>(settings.map.width_cells);
   plan_.map_height = static_cast<std::uint16_t>(settings.map.height_cells);
+}
+
+void PlannerTask::mark_prior(const planning::MovingAiMap& prior) {
+  // The file's first row is the grid's north edge (a map reads like a picture); cell row 0 is the
+  // south edge (the grid's origin is its south-west corner).
+  for (int row = 0; row < prior.height; ++row) {
+    for (int x = 0; x < prior.width; ++x) {
+      if (!prior.passable(x, row)) (void)map_.mark_cell(x, prior.height - 1 - row);
+    }
+  }
+  map_.clear_changes();  // known before the first search: nothing to repair
 }
 
 void PlannerTask::mark(double wx, double wy) noexcept {

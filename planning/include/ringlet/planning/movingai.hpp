@@ -7,6 +7,7 @@
 // diagonal step may not cut the corner of a blocked cell (both cells beside it must be passable).
 // In Cost units a cell is kCellCost (2^32), so a 10 000-step path is exact to ~1e-6 cells.
 #include <filesystem>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +48,8 @@ struct MovingAiProblem {
 
 /// Reads a `.map`; throws MovingAiError naming the file and line of the first problem.
 MovingAiMap read_movingai_map(const std::filesystem::path& path);
+/// Writes `m` as a `.map` (terrain as given, rows in order), to `out`.
+void write_movingai_map(std::ostream& out, const MovingAiMap& m);
 /// Reads a `.scen` (version 1); throws MovingAiError naming the file and line of the first problem.
 std::vector<MovingAiProblem> read_movingai_scen(const std::filesystem::path& path);
 /// Checks a problem against its map (dimensions, passable ends); empty when fine, else why.

@@ -12,6 +12,7 @@
 #include "ringlet/firmware/config.hpp"
 #include "ringlet/hal/clock.hpp"
 #include "ringlet/hal/robot.hpp"
+#include "ringlet/planning/movingai.hpp"
 
 namespace ringlet::hal::can {
 struct CanSettings;
@@ -37,6 +38,12 @@ class Section;
 /// The [can] section as read, the settings the "can" backend drives its board with; null unless
 /// robot.backend is "can".
 [[nodiscard]] const hal::can::CanSettings* can_settings(const FirmwareConfig& config) noexcept;
+
+/// The "sim" backend's world as the planner's prior map ([planner] prior_map): the configuration's
+/// planner grid, first row the north edge as a .map file reads, a cell blocked ('@') where an
+/// obstacle or the world's edge comes within half a cell of its centre. A ConfigError naming
+/// robot.backend when it is not "sim"; the world's errors name its file:line.
+[[nodiscard]] planning::MovingAiMap sim_world_map(const FirmwareConfig& config);
 
 /// Makes the camera of [camera] backend "opencv" (ringlet::firmware::make_opencv_camera).
 using OpenCvCameraMaker = std::unique_ptr<hal::Camera> (*)(const FirmwareConfig& config, const hal::Clock& clock);

@@ -84,6 +84,7 @@ struct PlannerSettings {
   planning::KnnParams knn{};            // k, distance_weighted (prior_speed: top_speed)
   int wall_occupied = 3;                // the learned model's wall rule (learned_cost_model.hpp)
   std::filesystem::path experiences;    // loaded at start (empty: none)
+  std::filesystem::path prior_map;      // a MovingAI .map of what is known before the run (empty: nothing)
   std::filesystem::path record;         // this mission's experiences, written at its end (empty: none)
   int capacity = 10000;                 // experiences this mission may record
   bool learn_online = false;            // recorded experiences join the model during the mission

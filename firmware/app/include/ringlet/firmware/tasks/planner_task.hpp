@@ -46,6 +46,7 @@
 #include "ringlet/planning/dstar_lite.hpp"
 #include "ringlet/planning/knn_regressor.hpp"
 #include "ringlet/planning/learned_cost_model.hpp"
+#include "ringlet/planning/movingai.hpp"
 #include "ringlet/planning/rebuild_worker.hpp"
 #include "ringlet/planning/region_graph.hpp"
 #include "ringlet/planning/transition_recorder.hpp"
@@ -77,9 +78,11 @@ class PlannerTask final : public executive::Task {
 
   static std::unique_ptr<executive::Task> make(TaskServices& services);
   /// `log`: where recorded experiences go (null: none kept); `loaded`: the experiences the learned
-  /// model starts from.
+  /// model starts from; `prior`: the cells known to be blocked before the run ([planner]
+  /// prior_map, the grid's size; null: none), marked as laser hits would be.
   PlannerTask(const PlannerSettings& settings, wb::Whiteboard& board, bool realtime,
-              ExperienceLog* log = nullptr, std::span<const planning::Experience> loaded = {});
+              ExperienceLog* log = nullptr, std::span<const planning::Experience> loaded = {},
+              const planning::MovingAiMap* prior = nullptr);
   void run(const executive::TaskContext& ctx) noexcept override;
   [[nodiscard]] hal::Nanos modelled_cost() const noexcept override { return cost_; }
 
@@ -96,6 +99,7 @@ class PlannerTask final : public executive::Task {
   int integrate_scan(const wb::Pose& pose) noexcept;
   void integrate_robots(const wb::Pose& pose) noexcept;
   void mark(double wx, double wy) noexcept;
+  void mark_prior(const planning::MovingAiMap& prior);
   void record(const wb::Pose& pose, int region, const executive::TaskContext& ctx) noexcept;
   /// The learned model forgets what the new counts and the robot's move changed; the vertices
   /// whose edges D* Lite must re-read are queued when `repair` (a search under way; else it starts
