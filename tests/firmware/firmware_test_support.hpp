@@ -1,12 +1,15 @@
 #pragma once
 // Shared by the firmware tests: the shipped configuration with a few keys changed, as text, so
 // that every test builds the stack exactly the way the binary does.
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "ringlet/firmware/config.hpp"
+#include "ringlet/firmware/mission_runner.hpp"
+#include "ringlet/firmware/stack.hpp"
 
 namespace ringlet::firmware::test {
 
@@ -59,6 +62,13 @@ inline std::string error_of(const std::string& text) {
     return e.what();
   }
   return "(no error)";
+}
+
+/// Runs `stack`'s mission as the binary does, for cfg.mission.timeout_s at most, its log dropped.
+inline RunOutcome run_to_end(FirmwareStack& stack, const FirmwareConfig& cfg) {
+  std::atomic<bool> interrupt{false};
+  std::ostringstream log;
+  return run_mission(stack, cfg.mission.timeout_s, interrupt, log);
 }
 
 }  // namespace ringlet::firmware::test

@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "firmware_test_support.hpp"
@@ -45,9 +44,7 @@ struct LearnedRun {
 LearnedRun run(const std::string& text) {
   const auto cfg = parse_as_shipped(text);
   FirmwareStack stack(cfg);
-  std::atomic<bool> interrupt{false};
-  std::ostringstream log;
-  const auto outcome = run_mission(stack, cfg.mission.timeout_s, interrupt, log);
+  const auto outcome = test::run_to_end(stack, cfg);
   EXPECT_TRUE(outcome.experiences_error.empty()) << outcome.experiences_error;
   LearnedRun r;
   r.summary = summarize(stack, outcome, stack.executive().failsafe_triggered() || outcome.watchdog_fired);

@@ -6,10 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -131,9 +129,7 @@ struct WoodsRun {
 WoodsRun run_woods(const std::string& text) {
   const auto cfg = parse_as_shipped(text);
   FirmwareStack stack(cfg);
-  std::atomic<bool> interrupt{false};
-  std::ostringstream log;
-  const auto outcome = run_mission(stack, cfg.mission.timeout_s, interrupt, log);
+  const auto outcome = test::run_to_end(stack, cfg);
   WoodsRun r;
   r.summary = summarize(stack, outcome, stack.executive().failsafe_triggered() || outcome.watchdog_fired);
   std::vector<double> xs;
@@ -155,9 +151,7 @@ TEST(PriorMap, WithItALearnedModelKeepsToTheMiddleOfTheWidePathAndArrivesSooner)
   {  // one training mission with the binary model, its experiences recorded
     const auto cfg = parse_as_shipped(with_planner(shipped_config_text(kTraining), "record = \"" + experiences.string() + "\""));
     FirmwareStack stack(cfg);
-    std::atomic<bool> interrupt{false};
-    std::ostringstream log;
-    const auto outcome = run_mission(stack, cfg.mission.timeout_s, interrupt, log);
+    const auto outcome = test::run_to_end(stack, cfg);
     ASSERT_TRUE(outcome.experiences_error.empty()) << outcome.experiences_error;
   }
   const std::string woods = shipped_config_text(kWoods);
