@@ -24,7 +24,7 @@ TEST(PddlNoAllocation, StartAndStepAllocateNothing) {
     for (const std::int32_t depth : {kNoHorizon, 3}) {
       for (Planner* p : {static_cast<Planner*>(&lama), static_cast<Planner*>(&regression)}) {
         PlannerStatus s = p->start(g.task, depth);
-        for (; s == PlannerStatus::kRunning; ++steps) s = p->step(37);
+        for (; s == PlannerStatus::kRunning; ++steps) s = p->step(7);
       }
     }
     EXPECT_EQ(ringlet::test::allocations() - before, 0U);
