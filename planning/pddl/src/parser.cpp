@@ -268,22 +268,29 @@ class DomainParser {
     d_.actions.push_back(std::move(a));
   }
 
+  /// Opens a condition or an effect. "()" and "(and x...)" (each x read by `part` one level
+  /// deeper) are consumed whole: true. Otherwise false, the cursor just after "(". The depth
+  /// bound keeps the recursion's stack small whatever the input.
+  template <typename Part>
+  bool conjunction(const char* plural, const char* one, int depth, Part part) {
+    if (depth > kMaxNesting) c_.fail(c_.peek(), std::string(plural) + " nested too deeply");
+    c_.open(std::string("to start ") + one);
+    if (c_.peek().kind == TokenKind::kClose) {
+      c_.next();
+      return true;
+    }
+    if (c_.peek().kind != TokenKind::kName || c_.peek().text != "and") return false;
+    c_.next();
+    while (c_.peek().kind != TokenKind::kClose) part(depth + 1);
+    c_.next();
+    return true;
+  }
+
  public:
   /// A goal description: and / not / = / an atom; `()` is the empty conjunction.
   void condition(const std::vector<Parameter>& scope, std::vector<Literal>& out, int depth) {
-    if (depth > kMaxNesting) c_.fail(c_.peek(), "conditions nested too deeply");
-    c_.open("to start a condition");
-    if (c_.peek().kind == TokenKind::kClose) {
-      c_.next();
-      return;
-    }
+    if (conjunction("conditions", "a condition", depth, [&](int d) { condition(scope, out, d); })) return;
     const Token& head = c_.peek();
-    if (head.kind == TokenKind::kName && head.text == "and") {
-      c_.next();
-      while (c_.peek().kind != TokenKind::kClose) condition(scope, out, depth + 1);
-      c_.next();
-      return;
-    }
     if (head.kind == TokenKind::kName &&
         (head.text == "or" || head.text == "imply" || head.text == "exists" || head.text == "forall")) {
       c_.fail(head, "\"" + head.text + "\" is not supported (STRIPS subset: a conjunction of literals)");
@@ -377,19 +384,8 @@ class DomainParser {
  private:
   /// Literals go to `out`; a "when" goes to `whens` (nullptr inside a "when": no nesting).
   void effect(const std::vector<Parameter>& scope, Effect& out, std::vector<Effect>* whens, int depth) {
-    if (depth > kMaxNesting) c_.fail(c_.peek(), "effects nested too deeply");
-    c_.open("to start an effect");
-    if (c_.peek().kind == TokenKind::kClose) {
-      c_.next();
-      return;
-    }
+    if (conjunction("effects", "an effect", depth, [&](int d) { effect(scope, out, whens, d); })) return;
     const Token& head = c_.peek();
-    if (head.kind == TokenKind::kName && head.text == "and") {
-      c_.next();
-      while (c_.peek().kind != TokenKind::kClose) effect(scope, out, whens, depth + 1);
-      c_.next();
-      return;
-    }
     if (head.kind == TokenKind::kName && head.text == "when") {
       need(kConditionalEffects, head, "\"when\"");
       if (whens == nullptr) c_.fail(head, "\"when\" inside \"when\" is not supported");
