@@ -1,0 +1,11 @@
+; A 3 x 3 courtyard (pXY: column X, row Y); obstacles block two ways into the centre.
+(define (problem courtyard-3x3)
+  (:domain navigation)
+  (:objects robot1 - robot p11 p21 p31 p12 p22 p32 p13 p23 p33 - place)
+  (:init (at robot1 p11)
+         (connected p11 p21) (connected p21 p11) (connected p11 p12) (connected p12 p11) (connected p21 p31) (connected p31 p21)
+         (connected p21 p22) (connected p22 p21) (connected p31 p32) (connected p32 p31) (connected p12 p22) (connected p22 p12)
+         (connected p12 p13) (connected p13 p12) (connected p22 p32) (connected p32 p22) (connected p22 p23) (connected p23 p22)
+         (connected p32 p33) (connected p33 p32) (connected p13 p23) (connected p23 p13) (connected p23 p33) (connected p33 p23)
+         (blocked p21 p22) (blocked p22 p21) (blocked p12 p22) (blocked p22 p12))
+  (:goal (and (at robot1 p33))))

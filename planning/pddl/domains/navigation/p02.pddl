@@ -1,0 +1,13 @@
+; A 4 x 3 courtyard: inspect p23 and end at p41; a wall of known obstacles between rows 1 and 2.
+(define (problem courtyard-4x3)
+  (:domain navigation)
+  (:objects robot1 - robot p11 p21 p31 p41 p12 p22 p32 p42 p13 p23 p33 p43 - place)
+  (:init (at robot1 p11) (checkpoint p23)
+         (connected p11 p21) (connected p21 p11) (connected p11 p12) (connected p12 p11) (connected p21 p31) (connected p31 p21)
+         (connected p21 p22) (connected p22 p21) (connected p31 p41) (connected p41 p31) (connected p31 p32) (connected p32 p31)
+         (connected p41 p42) (connected p42 p41) (connected p12 p22) (connected p22 p12) (connected p12 p13) (connected p13 p12)
+         (connected p22 p32) (connected p32 p22) (connected p22 p23) (connected p23 p22) (connected p32 p42) (connected p42 p32)
+         (connected p32 p33) (connected p33 p32) (connected p42 p43) (connected p43 p42) (connected p13 p23) (connected p23 p13)
+         (connected p23 p33) (connected p33 p23) (connected p33 p43) (connected p43 p33)
+         (blocked p21 p22) (blocked p22 p21) (blocked p31 p32) (blocked p32 p31) (blocked p23 p33) (blocked p33 p23))
+  (:goal (and (at robot1 p41) (inspected p23))))
