@@ -1,0 +1,163 @@
+#!/usr/bin/env python3
+"""Model-checks a machine or a schedule with spin: llfsmc --promela, `spin -a`, the host C compiler
+builds `pan` (once with -DNOCLAIM -DSAFETY for the assertions, once with the LTL claims), pan runs
+every property; reports states, depth and time from pan's output. A failed property's trail is
+replayed (`spin -t`) and printed as ringlets: turn, machine, state before -> after, inputs, outputs.
+
+    spin_verify.py MODEL.machine|SCHEDULE.schedule --work DIR [--ringlets N] [--expect-fail PROP]
+                   [--cc gcc] [--spin spin]
+
+Exit 0 when every property holds (or, with --expect-fail, when exactly that property fails with a
+readable counterexample); 1 otherwise. Standard library only.
+"""
+
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCALE = 1000
+
+
+def run(cmd, cwd, timeout=300):
+    p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout)
+    return p.returncode, p.stdout + p.stderr
+
+
+def pan_figures(out):
+    f = {}
+    m = re.search(r"depth reached (\d+), errors: (\d+)", out)
+    if m:
+        f["depth"], f["errors"] = int(m.group(1)), int(m.group(2))
+    m = re.search(r"(\d+) states, stored", out)
+    if m:
+        f["states"] = int(m.group(1))
+    m = re.search(r"pan: elapsed time ([\d.e+-]+) seconds", out)
+    f["time_s"] = float(m.group(1)) if m else 0.0
+    return f
+
+
+def value(name, v, meta):
+    return f"{int(v) / SCALE:g}" if name in meta["fixed"] else ("true" if v == "1" and name.endswith(
+        ("stop", "valid", "visible", "done", "has_plan")) else v)
+
+
+def readable_trace(out, meta):
+    """spin -t's printf lines (@T @I @R @O @A) as turns of ringlets."""
+    names = {m["name"]: m["states"] for m in meta["machines"]}
+    lines, turn, inputs, outputs = [], 0, [], []
+    for raw in out.splitlines():
+        s = raw.strip()
+        if "START OF CYCLE" in s:
+            lines.append("  <<< the trace repeats from here (a cycle that violates the property) >>>")
+        if s.startswith("@T"):
+            turn += 1
+            inputs, outputs = [], []
+            lines.append(f"turn {turn}:")
+        elif s.startswith("@I "):
+            _, name, v = s.split()
+            inputs.append(f"{name}={value(name, v, meta)}")
+        elif s.startswith("@R "):
+            parts = s.split()
+            if len(parts) == 5:
+                m, a, b, susp = parts[1], int(parts[2]), int(parts[3]), parts[4]
+                if len(inputs) and not any(x.startswith("  inputs") for x in lines[-3:]):
+                    lines.append("  inputs: " + ", ".join(inputs))
+                st = names[m]
+                change = f"{st[a]} -> {st[b]}" if a != b else f"{st[a]}"
+                lines.append(f"  ringlet {m}: {change}{' (suspended)' if susp == '1' else ''}")
+        elif s.startswith("@O "):
+            _, name, v = s.split()
+            if name not in meta["inputs"]:
+                outputs.append(f"{name}={value(name, v, meta)}")
+            if outputs and raw is not None:
+                pass
+        elif s.startswith("@A "):
+            lines.append(f"  assertion {s.split()[1]} fails here")
+        if s.startswith("@O ") and lines and not lines[-1].startswith("  outputs"):
+            lines.append("  outputs: " + ", ".join(outputs))
+        elif s.startswith("@O ") and lines:
+            lines[-1] = "  outputs: " + ", ".join(outputs)
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("model")
+    ap.add_argument("--work", required=True)
+    ap.add_argument("--ringlets", type=int, default=1)
+    ap.add_argument("--expect-fail")
+    ap.add_argument("--cc", default="gcc")
+    ap.add_argument("--spin", default="spin")
+    args = ap.parse_args(argv)
+    os.makedirs(args.work, exist_ok=True)
+    pml = os.path.join(args.work, "model.pml")
+    cmd = [sys.executable, os.path.join(HERE, "llfsmc.py"), os.path.abspath(args.model), "--promela", pml]
+    if not args.model.endswith(".schedule"):
+        cmd += ["--ringlets", str(args.ringlets)]
+    rc, out = run(cmd, args.work)
+    if rc:
+        sys.stdout.write(out)
+        return 1
+    with open(pml + ".json", encoding="utf-8") as f:
+        meta = json.load(f)
+    for m in meta["machines"]:
+        for n in m["notes"]:
+            print(f"abstracted: {n}")
+    rc, out = run([args.spin, "-a", "model.pml"], args.work)
+    if rc:
+        print(out)
+        print("spin -a failed")
+        return 1
+    builds = {"safety": ["-DNOCLAIM", "-DSAFETY"], "ltl": ["-DNOREDUCE"]}
+    for name, flags in builds.items():
+        rc, out = run([args.cc, "-O0", "-w", *flags, "-DVECTORSZ=4096", "-o", f"pan_{name}", "pan.c"], args.work)
+        if rc:
+            print(out)
+            print(f"{args.cc} failed to build pan")
+            return 1
+    results = []
+    runs = [("assertions", ["./pan_safety", "-m100000"])]
+    for p in meta["properties"]:
+        if p["kind"] == "ltl":
+            runs.append((p["name"], ["./pan_ltl", "-a", "-m100000", "-N", p["name"]]))
+    failed = []
+    for pname, command in runs:
+        t0 = time.monotonic()
+        rc, out = run(command, args.work)
+        fig = pan_figures(out)
+        wall = time.monotonic() - t0
+        if "errors" not in fig:
+            print(out)
+            print(f"{pname}: could not read pan's output")
+            return 1
+        ok = fig["errors"] == 0 and "violated" not in out
+        print(f"{'HOLDS' if ok else 'FAILS'} {pname}: {fig.get('states', 0)} states, depth {fig['depth']}, "
+              f"{fig['time_s']:.2f} s (pan), {wall:.2f} s wall")
+        results.append((pname, ok, fig))
+        if not ok:
+            failed.append(pname)
+            trail_cmd = [args.spin, "-t", "-B"] + (["-N", pname] if pname != "assertions" else []) + ["model.pml"]
+            rc, tout = run(trail_cmd, args.work)
+            trace = readable_trace(tout, meta)
+            print(f"counterexample for {pname} ({len(trace.splitlines())} lines):")
+            print(trace)
+            for f in os.listdir(args.work):
+                if f.endswith(".trail"):
+                    os.remove(os.path.join(args.work, f))
+    if args.expect_fail:
+        expected = [f for f in failed if f == args.expect_fail or f.endswith("_" + args.expect_fail)]
+        if expected and len(failed) == 1:
+            print(f"as expected, {args.expect_fail} fails")
+            return 0
+        print(f"expected exactly {args.expect_fail} to fail; failed: {failed or 'none'}")
+        return 1
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
