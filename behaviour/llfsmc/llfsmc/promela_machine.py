@@ -350,10 +350,13 @@ class MachineTx:
             if k in self.domains:
                 self.note(f"{where} line {st.line}: '{st.text}' abstracted: any of {self.domains[k]}")
                 return [self.havoc(name, self.domains[k])]
-            if st.rhs is None:
-                raise Untranslatable((st.line, 1), "no expression")
-            e = self.expr_of(st)
-            if e is None:
+            if st.kind == "incr":
+                e = S.NumberLit((st.line, 1), "1", "int")
+            elif st.rhs is None:
+                raise Untranslatable((st.line, 1), "its value is not an expression the model checker reads")
+            else:
+                e = self.expr_of(st)
+            if e is None and st.kind != "incr":
                 try:
                     parse_action_expr(st.rhs, (st.line, 1))
                 except SourceError as err:
