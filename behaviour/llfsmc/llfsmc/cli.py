@@ -90,6 +90,32 @@ def load_model(path, schema):
     return model, []
 
 
+def apply_schedule_assumes(sched, entries, schema, diags):
+    """A schedule's `assume` lines replace the machines' own for this schedule."""
+    from . import syntax as S
+    from .model import Assume
+    for head, name, values, kind, pos in sched.assumes:
+        hit = False
+        for e in entries:
+            m = e.model
+            if kind == "value" and head == m.name and name in m.variables and m.variables[name].kind == "parameter":
+                target = S.Name(pos, (name,))
+            elif kind == "domain" and head in schema.messages:
+                ext = next((v for v in m.variables.values() if v.kind == "external" and v.type == head), None)
+                if ext is None:
+                    continue
+                target = S.Member(pos, S.Name(pos, (ext.name,)), name)
+            else:
+                continue
+            text = S.print_expr(target)
+            m.assumes = [a for a in m.assumes if not (a.kind == kind and S.print_expr(a.target) == text)]
+            m.assumes.append(Assume(kind, target, values, pos))
+            hit = True
+        if not hit:
+            diags.error(*pos, f"'{head}.{name}' is no parameter of a scheduled machine and no whiteboard "
+                              "field one of them reads")
+
+
 def compile_promela(args, schema):
     """--promela for a model or a schedule: (error lines, {path: text})."""
     sched_diags = Diagnostics(args.model)
@@ -111,6 +137,9 @@ def compile_promela(args, schema):
                 entries.append(ScheduleEntry(model, n, full))
         if errors:
             return errors, {}
+        apply_schedule_assumes(sched, entries, schema, sched_diags)
+        if sched_diags:
+            return sched_diags.lines(), {}
         period, props, own = sched.period_ms, sched.properties, False
     else:
         model, errors = load_model(args.model, schema)

@@ -127,7 +127,7 @@ def generate_promela(entries, schema, period_ms, schedule_properties, diags_for,
     for e, tx in zip(entries, txs):
         for _ in range(e.ringlets):
             out.append(f"    printf(\"@R {tx.M} %d\", {tx.st('st')}); ringlet_{tx.M}(); "
-                       f"printf(\" %d %d\\n\", {tx.st('st')}, {tx.st('susp')});")
+                       f"printf(\" %d %d\\n\", {tx.st('st')}, {tx.st('susp')}); {tx.clock_reset()}")
     for name in sorted(wb):
         out.append(f"    printf(\"@O {name[3:].replace('_', '.', 1)} %d\\n\", {name});")
     for p, pname, text, _ in props:
@@ -145,6 +145,7 @@ def generate_promela(entries, schema, period_ms, schedule_properties, diags_for,
                       "notes": tx.notes} for e, tx in zip(entries, txs)],
         "fixed": sorted(f"{n[3:].replace('_', '.', 1)}" for n, t in wb.items() if _is_fixed(n, txs)) +
                  sorted(f"{t}.{f}" for (t, f), (_, _, ty) in inputs.items() if ty == "fixed"),
+        "bools": sorted(f"{n[3:].replace('_', '.', 1)}" for n, t in wb.items() if t == "bool"),
         "properties": [{"name": pname, "kind": p.kind, "line": p.pos[0],
                         "source": (tx.m.source_name if tx else "schedule")} for p, pname, _, tx in props],
         "inputs": {f"{t}.{f}": d for (t, f), (d, _, _) in sorted(inputs.items())},

@@ -59,6 +59,7 @@ class MachineTx:
         self.relevant = set()
         self.nd_count = 0
         self.thresholds = []
+        self.timed_states = set()  # states with an after() guard
         self.read_domains()
 
     # -- declarations ------------------------------------------------------------------------
@@ -434,10 +435,13 @@ class MachineTx:
         exit_ = self.section(s, "OnExit")
         internal = self.section(s, "Internal")
         chain = "; ".join(internal or ["skip"])
+        before = len(self.thresholds)
         for t in reversed(s.transitions):
             fire = exit_ + [f"{self.st('st')} = {self.state_index[t.target]}", f"{self.st('ent')} = true"]
             chain = f"if :: {self.guard(t, s)} -> {'; '.join(fire)} :: else -> {chain} fi"
         lines.append(chain)
+        if len(self.thresholds) > before:
+            self.timed_states.add(self.state_index[s.name])
         for ext in s.writes:
             for k in self.modelled_fields(ext):
                 lines.append(f"{self.wb_name(k)} = {self.var_name(k)}")
@@ -507,6 +511,10 @@ class MachineTx:
         for k in sorted(self.relevant):
             if k[0] == "l":
                 lines.append(f"{self.pml_type(k)} {self.var_name(k)} = {self.initial(k)};")
+            elif k[0] == "x" and self.m.variables[k[1]].access == "read":
+                # A read-only copy is snapshotted before every use in a ringlet: dead between
+                # ringlets, so kept out of the state vector (hidden; a bit cannot be hidden).
+                lines.append(f"hidden {'byte' if self.pml_type(k) == 'bool' else self.pml_type(k)} {self.var_name(k)};")
             elif k[0] == "x":
                 lines.append(f"{self.pml_type(k)} {self.var_name(k)} = 0;")
         for i in range(1, self.nd_count + 1):
@@ -515,6 +523,15 @@ class MachineTx:
 
     def pml_type(self, k):
         return {"bool": "bool", "int": "int", "fixed": "int"}[self.ptype(k)]
+
+    def clock_reset(self):
+        """After a ringlet: the clock only matters in a state with an after() guard that was not
+        just entered (OnEntry resets it anyway), so elsewhere it is zeroed: fewer states, same
+        behaviour."""
+        if not self.thresholds:
+            return ""
+        timed = " || ".join(f"{self.st('st')} == {i}" for i in sorted(self.timed_states)) or "false"
+        return f"if :: {self.st('ent')} || !({timed}) -> {self.st('t')} = 0 :: else fi;"
 
     def clock_cap(self):
         return max(self.thresholds, default=0)

@@ -6,12 +6,18 @@
     machine safety.machine ringlets 2        # ringlets per turn (default 1)
     ltl stop_stands: [] (!at(Safety, Clear) -> MotionCommand.stop)
     assert name: expression                  # checked at the end of every turn
+    assume Safety.hold_ms = 30               # a machine parameter's value for this schedule
+    assume LaserSummary.nearest_range in {0.3, 1.0}   # an input's domain for this schedule
+
+The `assume` lines override the machines' own (a coarser abstraction or a shorter time keeps the
+product of the machines small; say next to them why the properties do not depend on it).
 
 In a schedule's properties a whiteboard field is `Type.field` and a machine's variable
 `Machine.variable`; states are `at(Machine, State)`.
 """
 
 from .diagnostics import SourceError
+from .expr_parser import parse_initial_value
 from .lexer import lex_line
 from .model import Property
 from .vexpr import parse_ltl
@@ -22,6 +28,7 @@ class Schedule:
         self.period_ms = None
         self.machines = []  # (path, ringlets, (line, col))
         self.properties = []
+        self.assumes = []  # (Machine or Type, name, tree, kind "value"/"domain", pos)
 
 
 def parse_schedule(text, diags):
@@ -47,6 +54,16 @@ def parse_schedule(text, diags):
                 if n < 1:
                     raise SourceError(first.line, first.col, "ringlets per turn must be >= 1")
                 sched.machines.append((body[1], n, (first.line, first.col)))
+            elif first.is_word("assume"):
+                ok = len(toks) >= 6 and toks[1].kind == "ident" and toks[2].is_op(".") and toks[3].kind == "ident" \
+                    and (toks[4].is_op("=") or toks[4].is_word("in"))
+                if not ok:
+                    raise SourceError(first.line, first.col,
+                                      "expected 'assume Machine.parameter = v' or 'assume Type.field in {...}'")
+                last = toks[-1]
+                values = parse_initial_value(toks[5:], (last.line, last.col + len(last.text)))
+                sched.assumes.append((toks[1].text, toks[3].text, values,
+                                      "value" if toks[4].is_op("=") else "domain", (first.line, first.col)))
             elif first.is_word("ltl", "assert"):
                 if len(toks) < 4 or toks[1].kind != "ident" or not toks[2].is_op(":"):
                     raise SourceError(first.line, first.col, f"expected '{first.text} <name>: <formula>'")
