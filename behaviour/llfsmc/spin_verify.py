@@ -88,12 +88,76 @@ def readable_trace(out, meta):
     return "\n".join(lines)
 
 
+def kripke_label(names, values, meta):
+    states = {m["name"]: m["states"] for m in meta["machines"]}
+    parts = []
+    for n, v in zip(names, values):
+        if n.endswith("_st") and n[:-3] in states:
+            parts.append(f"{n[:-3]}: {states[n[:-3]][int(v)]}")
+        elif n.endswith("_susp") and n[:-5] in states:
+            if v != "0":
+                parts[-1] += " (suspended)" if parts else ""
+        elif n.endswith(("_ent", "_req")) and n[:-4] in states:
+            continue
+        elif n.endswith("_t") and n[:-2] in states:
+            if v != "0":
+                parts.append(f"{n[:-2]} clock: {v} turns")
+        elif n.startswith("wb_"):
+            field = n[3:].replace("_", ".", 1)
+            parts.append(f"{field} = {value(field, v, meta)}")
+    return "\\n".join(parts)
+
+
+def write_kripke(args, meta):
+    """Reachable turn-end states and the turns between them, from pan's own search (-DPRINTF)."""
+    work = os.path.join(args.work, "kripke")
+    os.makedirs(work, exist_ok=True)
+    with open(os.path.join(args.work, "model.pml"), encoding="utf-8") as f, \
+            open(os.path.join(work, "model.pml"), "w", encoding="utf-8") as g:
+        g.write(f.read())
+    for cmd in ([args.spin, "-DKRIPKE", "-a", "model.pml"],
+                [args.cc, "-O0", "-w", "-DPRINTF", "-DSAFETY", "-DNOCLAIM", "-DVECTORSZ=4096", "-o", "pan", "pan.c"]):
+        rc, out = run(cmd, work)
+        if rc:
+            print(out)
+            return 1
+    rc, out = run(["./pan", "-m1000000", "-w20"], work)
+    names = meta["state_vector"]
+    edges, nodes = set(), {}
+    for line in out.splitlines():
+        if line.startswith("@K "):
+            a, b = line[3:].split(" > ")
+            for t in (a, b):
+                nodes.setdefault(t, len(nodes))
+            edges.add((a, b))
+    if len(nodes) > args.kripke_max:
+        print(f"Kripke structure: {len(nodes)} states, {len(edges)} turns: more than --kripke-max "
+              f"{args.kripke_max}, not drawn")
+        return 0
+    init = " ".join("0" for _ in names)
+    lines = ["digraph kripke {", "  rankdir=LR;", '  node [shape=box, fontsize=9, fontname="Helvetica"];',
+             f'  label="Kripke structure of {os.path.basename(args.model)}: {len(nodes)} turn-end states '
+             f'(the first is before the first turn), {len(edges)} turns";']
+    for t, i in sorted(nodes.items(), key=lambda x: x[1]):
+        lines.append(f'  s{i} [label="{kripke_label(names, t.split(), meta)}"{", style=bold" if i == 0 else ""}];')
+    for a, b in sorted(edges, key=lambda e: (nodes[e[0]], nodes[e[1]])):
+        lines.append(f"  s{nodes[a]} -> s{nodes[b]};")
+    lines.append("}")
+    with open(args.kripke, "w", encoding="utf-8") as f:
+        f.write("\n".join(lines) + "\n")
+    print(f"Kripke structure: {len(nodes)} states, {len(edges)} turns -> {args.kripke}")
+    del init
+    return 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("model")
     ap.add_argument("--work", required=True)
     ap.add_argument("--ringlets", type=int, default=1)
     ap.add_argument("--expect-fail", action="append", help="a property that must fail (repeatable)")
+    ap.add_argument("--kripke", help="also write the reachable Kripke structure (turn-end states) as Graphviz")
+    ap.add_argument("--kripke-max", type=int, default=400, help="refuse to draw more states than this")
     ap.add_argument("--cc", default="gcc")
     ap.add_argument("--spin", default="spin")
     args = ap.parse_args(argv)
@@ -161,6 +225,10 @@ def main(argv=None):
             for f in os.listdir(args.work):
                 if f.endswith(".trail"):
                     os.remove(os.path.join(args.work, f))
+    if args.kripke:
+        status = write_kripke(args, meta)
+        if status:
+            return status
     if args.expect_fail:
         # Exactly the expected properties fail (a machine's are named Machine_property), each with a
         # counterexample that shows ringlets.

@@ -110,12 +110,23 @@ def generate_promela(entries, schema, period_ms, schedule_properties, diags_for,
     for name in sorted(wb):
         out.append(f"{wb[name]} {name} = 0;")
     out.append("bool started = false;  /* false only before the first turn */")
+    svars = sorted(wb)
     for tx in txs:
         out.append("")
-        out.extend(tx.declarations())
+        decls = tx.declarations()
+        out.extend(decls)
+        svars += [d.split()[1] for d in decls if not d.startswith("hidden")]
+    # The Kripke structure (spin_verify.py --kripke): with -DKRIPKE and pan's -DPRINTF every turn
+    # the search executes prints its edge, from-state -> to-state over the whole state vector. The
+    # from-copies are state variables (so that pan's backtracking restores them) zeroed at the end
+    # of the turn (so that they never tell two stored states apart).
+    out.append("#ifdef KRIPKE")
+    out.extend(f"int k_{v};" for v in svars)
+    out.append("#endif")
     out.append("")
     out.extend(inlines)
     out.append("active proctype turns() {\n  do\n  :: atomic {\n    printf(\"@T\\n\");")
+    out.append("#ifdef KRIPKE\n    " + "; ".join(f"k_{v} = {v}" for v in svars) + ";\n#endif")
     for (typ, field), (dom, _, ty) in sorted(inputs.items()):
         g = f"wb_{typ}_{field}"
         out.append(f"    if " + " ".join(f":: {g} = {v}" for v in dom) + " fi;")
@@ -133,6 +144,10 @@ def generate_promela(entries, schema, period_ms, schedule_properties, diags_for,
     for p, pname, text, _ in props:
         if p.kind == "assert":
             out.append(f"    if :: !({text}) -> printf(\"@A {pname}\\n\"); assert(false) :: else fi;")
+    fmt = " ".join("%d" for _ in svars)
+    out.append("#ifdef KRIPKE\n    printf(\"@K " + fmt + " > " + fmt + "\\n\", " +
+               ", ".join([f"k_{v}" for v in svars] + svars) + ");\n    " +
+               "; ".join(f"k_{v} = 0" for v in svars) + ";\n#endif")
     out.append("    started = true\n  }\n  od\n}\n")
     for p, pname, text, _ in props:
         if p.kind == "ltl":
@@ -148,6 +163,7 @@ def generate_promela(entries, schema, period_ms, schedule_properties, diags_for,
         "bools": sorted(f"{n[3:].replace('_', '.', 1)}" for n, t in wb.items() if t == "bool"),
         "properties": [{"name": pname, "kind": p.kind, "line": p.pos[0],
                         "source": (tx.m.source_name if tx else "schedule")} for p, pname, _, tx in props],
+        "state_vector": svars,
         "inputs": {f"{t}.{f}": d for (t, f), (d, _, _) in sorted(inputs.items())},
     }
     return "\n".join(out) + "\n", meta
