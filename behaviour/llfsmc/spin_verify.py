@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Model-checks a machine or a schedule with spin: llfsmc --promela, `spin -a`, the host C compiler
-builds `pan`, pan runs
+builds `pan` (with the LTL claims; without a claim for the assertions), pan runs
 every property; reports states, depth and time from pan's output. A failed property's trail is
 replayed (`spin -t`) and printed as ringlets: turn, machine, state before -> after, inputs, outputs.
 
@@ -180,17 +180,24 @@ def main(argv=None):
         print(out)
         print("spin -a failed")
         return 1
-    # One pan (building it is most of the time): the assertions are checked in every run, so they
-    # need a run of their own only when there is no LTL property.
-    rc, out = run([args.cc, "-O0", "-w", "-DNOREDUCE", "-DVECTORSZ=4096", "-o", "pan", "pan.c"], args.work)
-    if rc:
-        print(out)
-        print(f"{args.cc} failed to build pan")
-        return 1
+    # Building pan is most of the time: one build for the LTL claims, and one without a claim for
+    # the assertions (a claim run prunes the search where the claim dies, so it does not check the
+    # assertions everywhere) only when the model has assertions.
     ltl = [p["name"] for p in meta["properties"] if p["kind"] == "ltl"]
-    runs = [(f"{name} (and the assertions)", name, ["./pan", "-a", "-m1000000", "-w20", "-N", name]) for name in ltl]
-    if not runs:
-        runs = [("assertions", "assertions", ["./pan", "-m1000000", "-w20"])]
+    asserts = [p["name"] for p in meta["properties"] if p["kind"] == "assert"]
+    builds = ([("pan_safety", ["-DNOCLAIM", "-DSAFETY"])] if asserts or not ltl else []) + \
+             ([("pan_ltl", ["-DNOREDUCE"])] if ltl else [])
+    for exe, flags in builds:
+        rc, out = run([args.cc, "-O0", "-w", *flags, "-DVECTORSZ=4096", "-o", exe, "pan.c"], args.work)
+        if rc:
+            print(out)
+            print(f"{args.cc} failed to build pan")
+            return 1
+    runs = []
+    if asserts or not ltl:
+        runs.append(("assertions" + (f" ({', '.join(asserts)})" if asserts else ""), "assertions",
+                     ["./pan_safety", "-m1000000", "-w20"]))
+    runs += [(name, name, ["./pan_ltl", "-a", "-m1000000", "-w20", "-N", name]) for name in ltl]
     failed, readable, results = [], {}, []
     for label, pname, command in runs:
         t0 = time.monotonic()
