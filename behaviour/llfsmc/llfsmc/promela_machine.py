@@ -419,9 +419,6 @@ class MachineTx:
         stmts = blocks.get((s.name, name))
         return self.stmts(s, name, stmts, {}) if stmts else []
 
-    def sections_of(self, s, name):
-        return self.section(s, name)
-
     def state_body(self, s):
         lines = []
         for ext in s.reads:
@@ -564,7 +561,7 @@ def property_text(tree, tr, resolve_state):
             return f"({walk(n.left)} {n.op} {walk(n.right)})"
         if _temporal(n):
             raise Untranslatable(n.pos, "a temporal operator inside an arithmetic expression")
-        return tr.tx(_states_to_bools(n, resolve_state), "bool")
+        return tr.tx(n, "bool")
     return walk(tree)
 
 
@@ -573,9 +570,3 @@ def _temporal(n):
         else True
 
 
-class _Raw(S.Node):
-    pass
-
-
-def _states_to_bools(n, resolve_state):
-    return n

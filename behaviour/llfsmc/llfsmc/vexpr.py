@@ -32,8 +32,6 @@ class LtlParser(Parser):
     until := or ['U' or]; unary adds `[]`, `<>`, `at(...)`. Everything else is the guard grammar,
     so `a && b` inside an atom and between temporal operands mean the same thing."""
 
-    IMPLIES = "->"
-
     def __init__(self, tokens, end):
         # '->' would be refused as member access by the guard grammar: it becomes an operator the
         # guard grammar does not know, so an atom ends there.
@@ -105,7 +103,6 @@ class ActionParser(Parser):
 
     def postfix(self):
         t0 = self.peek()
-        n = self.peek(1)
         if t0 is not None and (t0.kind == "ident" or t0.is_op("::")):
             save = self.k
             rooted, parts = self.qualified_name()
@@ -121,7 +118,6 @@ class ActionParser(Parser):
                 self.expect_op(")", "closing a call's arguments")
                 return S.Call((t0.line, t0.col), "::".join(parts), tuple(args))
             self.k = save
-        del n
         return super().postfix()
 
 
