@@ -64,6 +64,24 @@ class State:
         return self.pos[0]
 
 
+class Assume:
+    """A verification declaration (behaviour/README.md, "Model checking"): kind "domain"
+    (`assume x.f in {a, b}`: the values an input or an abstracted variable may take), "value"
+    (`assume p = v`: a parameter's value in the verification) or "call" (`assume call ns::f in
+    {a, b}`: what an abstracted library call may return)."""
+
+    def __init__(self, kind, target, values, pos):
+        self.kind, self.target, self.values, self.pos = kind, target, values, pos
+
+
+class Property:
+    """`ltl name: formula` (kind "ltl") or `assert name: expression` (kind "assert", checked at the
+    end of every turn)."""
+
+    def __init__(self, kind, name, tree, pos):
+        self.kind, self.name, self.tree, self.pos = kind, name, tree, pos
+
+
 class Model:
     def __init__(self):
         self.name = None
@@ -72,3 +90,5 @@ class Model:
         self.variables = {}  # name -> Var, declaration order kept
         self.states = []
         self.source_name = ""
+        self.assumes = []  # Assume, in order
+        self.properties = []  # Property, in order

@@ -7,7 +7,8 @@ except where the structure is lost (an unclosed code block), which stops the par
 from .diagnostics import Abort, SourceError
 from .expr_parser import parse_guard, parse_initial_value, parse_type
 from .lexer import LineMap, lex_line, scan_block
-from .model import ACCESS, ACTIONS, Action, Model, State, Transition, Var
+from .model import ACCESS, ACTIONS, Action, Assume, Model, Property, State, Transition, Var
+from .vexpr import parse_ltl
 from .names import MAX_NAME_LENGTH, RUNTIME_RESERVED, identifier_problem
 
 USAGE = {
@@ -19,6 +20,10 @@ USAGE = {
     "transition": "expected '-> <Target> when <expression>'",
     "submachine": "expected 'submachine <Machine> [restart|resume]'",
     "end": "expected 'end' alone on its line",
+    "assume": "expected 'assume <input>.<field> in {v, ...}', 'assume <local> in {v, ...}', "
+              "'assume <parameter> = <value>' or 'assume call <ns::function> in {v, ...}'",
+    "ltl": "expected 'ltl <name>: <formula>'",
+    "assert": "expected 'assert <name>: <expression>'",
 }
 HEADER_CHARS = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_./+-")
 
@@ -250,6 +255,46 @@ class ModelParser:
                               f"state '{self.state.name}' already owns submachine '{self.state.submachine[0]}'")
         if check_name(toks[1], "machine", self.diags, length=True):
             self.state.submachine = (toks[1].text, mode, (toks[1].line, toks[1].col))
+
+    # -- verification (read by the Promela back end only) --
+    def kw_assume(self, toks, raw):
+        first = toks[0]
+        end = _end_of(toks, first.line, raw)
+        rest = toks[1:]
+        kind = "domain"
+        if rest and rest[0].is_word("call"):
+            kind, rest = "call", rest[1:]
+        split = next((i for i, t in enumerate(rest) if t.is_word("in") or t.is_op("=")), None)
+        if split is None or split == 0 or split + 1 >= len(rest):
+            self.usage(first, "assume")
+        if rest[split].is_op("="):
+            if kind == "call":
+                self.usage(first, "assume")
+            kind = "value"
+        target = parse_guard(rest[:split], (rest[split].line, rest[split].col))
+        values = parse_initial_value(rest[split + 1:], end)
+        if kind != "value" and not hasattr(values, "items"):
+            raise SourceError(rest[split + 1].line, rest[split + 1].col, "expected a set of values '{a, b, ...}'")
+        self.model.assumes.append(Assume(kind, target, values, (first.line, first.col)))
+
+    def property(self, toks, raw, kind):
+        first = toks[0]
+        if len(toks) < 4 or toks[1].kind != "ident" or not toks[2].is_op(":"):
+            self.usage(first, kind)
+        check_name(toks[1], "property", self.diags)
+        for other in self.model.properties:
+            if other.name == toks[1].text:
+                raise SourceError(toks[1].line, toks[1].col,
+                                  f"duplicate property '{other.name}' (first declared on line {other.pos[0]})")
+        end = _end_of(toks, first.line, raw)
+        tree = parse_ltl(toks[3:], end)  # an assert may name states too; the back end refuses [] <> U there
+        self.model.properties.append(Property(kind, toks[1].text, tree, (first.line, first.col)))
+
+    def kw_ltl(self, toks, raw):
+        self.property(toks, raw, "ltl")
+
+    def kw_assert(self, toks, raw):
+        self.property(toks, raw, "assert")
 
     # -- code blocks --
     def code_block(self, k, section, col, brace):
