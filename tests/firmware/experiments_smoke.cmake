@@ -61,3 +61,11 @@ list(LENGTH nested panels)
 if(NOT panels EQUAL 5)
   message(FATAL_ERROR "fig3.svg: ${panels} <svg> elements, expected the figure and its four panels")
 endif()
+# Each panel is placed and scaled by the figure: its own <svg> tag carries the slot (x, y, width,
+# height) and its viewBox, with no width of its own (a panel nested at its own 960 px inside a
+# 480 px slot is clipped).
+string(REGEX MATCHALL "<svg x=\"[^>]*viewBox" placed "${svg}")
+list(LENGTH placed n)
+if(NOT n EQUAL 4)
+  message(FATAL_ERROR "fig3.svg: ${n} panels placed with their viewBox, expected 4")
+endif()

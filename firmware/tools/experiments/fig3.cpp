@@ -22,8 +22,18 @@ double path_length(const std::vector<hal::WorldPoint>& p) {
   return sum;
 }
 
-// One panel: the world with either the plan or the trajectory drawn, as an SVG document without
-// its XML declaration (it is nested in the figure's).
+// Removes the attribute `name="…"` from the first tag of `text`.
+void drop_attribute(std::string& text, const std::string& name) {
+  const std::size_t tag_end = text.find('>');
+  const std::size_t at = text.find(" " + name + "=\"");
+  if (at == std::string::npos || at > tag_end) return;
+  const std::size_t end = text.find('"', at + name.size() + 3);
+  text.erase(at, end + 1 - at);
+}
+
+// One panel: the world with either the plan or the trajectory drawn, as an SVG element without
+// the XML declaration and without its own width and height, so that the figure places and
+// scales it (its viewBox keeps the proportions).
 std::string panel(const sim_hal::World& world, const MissionResult& r, bool plan, const std::string& caption) {
   hal::RunPicture pic;
   std::vector<std::uint32_t> ends{static_cast<std::uint32_t>(r.first_plan.size())};
@@ -40,6 +50,8 @@ std::string panel(const sim_hal::World& world, const MissionResult& r, bool plan
   sim_hal::write_world_svg(s, world, pic);
   std::string text = s.str();
   if (text.rfind("<?xml", 0) == 0) text.erase(0, text.find('\n') + 1);
+  drop_attribute(text, "width");
+  drop_attribute(text, "height");
   return text;
 }
 
@@ -104,8 +116,10 @@ void write_fig3_svg(const std::filesystem::path& path, const std::filesystem::pa
       << "baseline against learned, simulator seed " << r.sim_seed << ": mission time cut "
       << (std::isnan(r.cut_pct) ? std::string("n/a (a goal was not reached)") : fixed(r.cut_pct, 1) + " %") << "</text>\n";
   for (int i = 0; i < 4; ++i) {
-    out << "<svg x=\"" << (i / 2) * kW << "\" y=\"" << 30 + (i % 2) * kH << "\" width=\"" << kW << "\" height=\"" << kH
-        << "\">\n" << panels[i] << "</svg>\n";
+    std::ostringstream place;
+    place << "<svg x=\"" << (i / 2) * kW << "\" y=\"" << 30 + (i % 2) * kH << "\" width=\"" << kW << "\" height=\"" << kH
+          << "\"";
+    out << place.str() << panels[i].substr(4);  // the panel's own <svg tag, placed
   }
   out << "</svg>\n";
   if (!out) throw std::runtime_error(path.string() + ": cannot write");
