@@ -13,6 +13,7 @@
 #include "ringlet/firmware/mission_report.hpp"
 #include "ringlet/firmware/mission_runner.hpp"
 #include "ringlet/firmware/stack.hpp"
+#include "ringlet/firmware/telemetry.hpp"
 
 namespace ringlet::firmware {
 namespace {
@@ -292,6 +293,25 @@ TEST(FirmwareStack, TheCanBoardIsRefusedInLockstep) {
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("executive.clock: the CAN board runs on the real clock"), std::string::npos) << e.what();
   }
+}
+
+// Per-goal times for the experiments: each goal is stamped with the frame it was first reported
+// reached in; reports that repeat a count stamp nothing; more goals than it holds are not stamped.
+TEST(Telemetry, StampsEachGoalWithTheFrameItWasFirstReportedReached) {
+  Telemetry t(16, 4);
+  t.record_progress(0, 3, 5);
+  EXPECT_TRUE(t.goal_frames().empty());
+  t.record_progress(1, 3, 7);
+  t.record_progress(1, 3, 8);
+  t.record_progress(3, 3, 12);  // two goals in one report: both stamped with its frame
+  ASSERT_EQ(t.goal_frames().size(), 3U);
+  EXPECT_EQ(t.goal_frames()[0], 7U);
+  EXPECT_EQ(t.goal_frames()[1], 12U);
+  EXPECT_EQ(t.goal_frames()[2], 12U);
+  EXPECT_EQ(t.goals_reached(), 3U);
+  Telemetry many(16, 4);
+  many.record_progress(Telemetry::kMaxGoalFrames + 5, Telemetry::kMaxGoalFrames + 5, 1);
+  EXPECT_EQ(many.goal_frames().size(), Telemetry::kMaxGoalFrames);
 }
 
 }  // namespace

@@ -34,7 +34,8 @@ void Telemetry::record_odometry(double distance) noexcept {
   last_odometry_ = distance;
 }
 
-void Telemetry::record_progress(std::size_t goals_reached, std::size_t goal_count) noexcept {
+void Telemetry::record_progress(std::size_t goals_reached, std::size_t goal_count, std::uint64_t frame) noexcept {
+  while (goals_stamped_ < goals_reached && goals_stamped_ < goal_frames_.size()) goal_frames_[goals_stamped_++] = frame;
   goals_reached_ = goals_reached;
   goal_count_ = goal_count;
 }

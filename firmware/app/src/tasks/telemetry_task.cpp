@@ -15,7 +15,7 @@ void TelemetryTask::run(const executive::TaskContext& ctx) noexcept {
   if (body.bumper && !was_touching_) telemetry_.record_collision(pose);
   was_touching_ = body.bumper;
   telemetry_.record_odometry(body.odometry_distance);
-  telemetry_.record_progress(status.reached, status.goal_count);
+  telemetry_.record_progress(status.reached, status.goal_count, ctx.frame);
   if (status.done) {
     telemetry_.record_pose(pose);  // end the trajectory where the mission ended
     ctx.request_stop();

@@ -4,6 +4,7 @@
 // vision found. Ground truth is not here: the report reads it from hal::GroundTruth. Buffers are sized at start-up for the longest run the
 // configuration allows, so recording never allocates; samples beyond capacity are counted, not
 // stored.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -49,7 +50,8 @@ class Telemetry {
   void record_collision(const hal::Pose2& pose) noexcept;
   /// The odometry's signed distance so far; the path length grows by each change's magnitude.
   void record_odometry(double distance) noexcept;
-  void record_progress(std::size_t goals_reached, std::size_t goal_count) noexcept;
+  /// `frame`: the frame of this report; a goal newly reached is stamped with it (goal_frames()).
+  void record_progress(std::size_t goals_reached, std::size_t goal_count, std::uint64_t frame) noexcept;
   /// Start-up only: the vision task's counters (the report shows them when enabled).
   VisionStats& enable_vision() noexcept;
   /// Start-up only (allocates): room for `cells` occupied cells and `plans` plans of up to
@@ -70,6 +72,12 @@ class Telemetry {
   [[nodiscard]] double odometry_path() const noexcept { return odometry_path_; }
   [[nodiscard]] std::size_t goals_reached() const noexcept { return goals_reached_; }
   [[nodiscard]] std::size_t goal_count() const noexcept { return goal_count_; }
+  /// The frame in which each goal reached so far was first reported reached, in goal order (at
+  /// most kMaxGoalFrames): per-goal mission times for the experiments.
+  static constexpr std::size_t kMaxGoalFrames = 32;
+  [[nodiscard]] std::span<const std::uint64_t> goal_frames() const noexcept {
+    return {goal_frames_.data(), goals_stamped_};
+  }
   [[nodiscard]] const VisionStats* vision() const noexcept { return vision_enabled_ ? &vision_ : nullptr; }
 
  private:
@@ -82,6 +90,8 @@ class Telemetry {
   double odometry_path_ = 0.0;
   std::size_t goals_reached_ = 0;
   std::size_t goal_count_ = 0;
+  std::array<std::uint64_t, kMaxGoalFrames> goal_frames_{};
+  std::size_t goals_stamped_ = 0;
   bool vision_enabled_ = false;
   VisionStats vision_{};
   bool plans_enabled_ = false;
