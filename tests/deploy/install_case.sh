@@ -43,15 +43,19 @@ echo "no installed program carries an rpath"
 if [[ $opencv == 1 || $opencv == TRUE || $opencv == ON ]]; then
   module=$p/lib/ringlet/ringlet_camera_opencv.so
   [[ -f $module ]] || fail "missing lib/ringlet/ringlet_camera_opencv.so (the OpenCV camera's module)"
-  readelf -W --dyn-syms "$module" | grep -q ' ringlet_open_opencv_camera$' || fail "the module lacks ringlet_open_opencv_camera"
+  # Read whole before grep: with pipefail, grep -q leaving early kills readelf with SIGPIPE, and a
+  # sanitizer build's module has enough symbols for that to fail the check.
+  syms=$(readelf -W --dyn-syms "$module")
+  grep -q ' ringlet_open_opencv_camera$' <<<"$syms" || fail "the module lacks ringlet_open_opencv_camera"
   rpath=$(readelf -d "$module" | grep -E '\((RPATH|RUNPATH)\)' || true)
   [[ -z $rpath ]] || fail "the installed camera module carries an rpath: $rpath"
-  if readelf -d "$p/bin/ringlet" | grep -q 'NEEDED.*libopencv'; then fail "bin/ringlet links OpenCV (it must load the module)"; fi
+  if grep -q 'NEEDED.*libopencv' <<<"$(readelf -d "$p/bin/ringlet")"; then fail "bin/ringlet links OpenCV (it must load the module)"; fi
   echo "the camera module is in lib/ringlet, without an rpath; bin/ringlet does not link OpenCV"
 fi
 
 run() { "${emulator[@]}" "$p/bin/ringlet" "$@"; }
-run --help | grep -q -- '--realtime' || fail "installed ringlet --help does not list --realtime"
+help=$(run --help)
+grep -q -- '--realtime' <<<"$help" || fail "installed ringlet --help does not list --realtime"
 
 # A shipped configuration from the install tree: ../../sim_hal/worlds must resolve there.
 out=$(run --config "$p/share/ringlet/firmware/config/courtyard.toml" --check 2>&1) ||
