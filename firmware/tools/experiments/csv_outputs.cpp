@@ -87,20 +87,25 @@ void fig2_outputs(const Options& o, const Fig2Result& f) {
   write_bar_panels(o.out_dir / "fig2.svg", {improvement, significance});
 }
 
-void fig3_outputs(const Options& o, const Fig3Result& f) {
+// fig3.csv holds both sets of trials (column map: prior or laser); fig3.svg is the prior map's
+// figure trial, fig3_laser.svg the laser-only one.
+void fig3_outputs(const Options& o, const std::vector<const Fig3Result*>& sets) {
   Csv csv(o.out_dir / "fig3.csv");
-  csv.out() << "trial,sim_seed,system,complete,mission_s,first_plan_m,driven_m,collisions,cut_pct\n";
-  for (std::size_t t = 0; t < f.trials.size(); ++t) {
-    const Fig3Trial& trial = f.trials[t];
-    const auto row = [&](const std::string& name, const MissionResult& m, double plan_m) {
-      csv.out() << t + 1 << ',' << trial.sim_seed << ',' << name << ',' << (m.summary.complete ? 1 : 0) << ','
-                << fixed(m.summary.mission_seconds, 2) << ',' << fixed(plan_m, 2) << ',' << fixed(m.summary.distance_m, 2)
-                << ',' << m.summary.collisions << ',' << fixed(trial.cut_pct, 2) << '\n';
-    };
-    row("baseline", trial.baseline, trial.plan_length_baseline_m);
-    row("learned n=" + std::to_string(f.n), trial.learned, trial.plan_length_learned_m);
+  csv.out() << "map,trial,sim_seed,system,complete,mission_s,first_plan_m,driven_m,collisions,cut_pct\n";
+  for (const Fig3Result* f : sets) {
+    const char* map = f->prior_map ? "prior" : "laser";
+    for (std::size_t t = 0; t < f->trials.size(); ++t) {
+      const Fig3Trial& trial = f->trials[t];
+      const auto row = [&](const std::string& name, const MissionResult& m, double plan_m) {
+        csv.out() << map << ',' << t + 1 << ',' << trial.sim_seed << ',' << name << ',' << (m.summary.complete ? 1 : 0)
+                  << ',' << fixed(m.summary.mission_seconds, 2) << ',' << fixed(plan_m, 2) << ','
+                  << fixed(m.summary.distance_m, 2) << ',' << m.summary.collisions << ',' << fixed(trial.cut_pct, 2) << '\n';
+      };
+      row("baseline", trial.baseline, trial.plan_length_baseline_m);
+      row("learned n=" + std::to_string(f->n), trial.learned, trial.plan_length_learned_m);
+    }
+    write_fig3_svg(o.out_dir / (f->prior_map ? "fig3.svg" : "fig3_laser.svg"), o.config_dir / "pb_woods.toml", *f);
   }
-  write_fig3_svg(o.out_dir / "fig3.svg", o.config_dir / "pb_woods.toml", f);
 }
 
 void incremental_outputs(const Options& o, const std::vector<IncrementalChain>& chains) {
@@ -133,7 +138,10 @@ void write_csv_and_plots(const Results& r) {
   if (r.mlp) learner_csv(o.out_dir / "table1_mlp.csv", {*r.mlp});
   learner_csv(o.out_dir / "table2.csv", r.table2);
   if (r.fig2) fig2_outputs(o, *r.fig2);
-  if (r.fig3) fig3_outputs(o, *r.fig3);
+  std::vector<const Fig3Result*> woods;
+  for (const auto* f : {&r.fig3, &r.fig3_laser})
+    if (*f) woods.push_back(&**f);
+  if (!woods.empty()) fig3_outputs(o, woods);
   if (!r.incremental.empty()) incremental_outputs(o, r.incremental);
 }
 

@@ -10,7 +10,9 @@
 #include "goals.hpp"
 #include "data.hpp"
 #include "pool.hpp"
+#include "ringlet/firmware/backend_factory.hpp"
 #include "ringlet/firmware/config.hpp"
+#include "ringlet/planning/movingai.hpp"
 #include "ringlet/sim_hal/world_svg.hpp"
 
 namespace ringlet::experiments {
@@ -57,10 +59,19 @@ std::string panel(const sim_hal::World& world, const MissionResult& r, bool plan
 
 }  // namespace
 
+std::filesystem::path write_prior_map(const std::filesystem::path& config, const std::filesystem::path& dir) {
+  const auto path = dir / (config.stem().string() + ".map");
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  planning::write_movingai_map(out, firmware::sim_world_map(firmware::load_config(config)));
+  if (!out.flush()) throw std::runtime_error(path.string() + ": cannot write the prior map");
+  return path;
+}
+
 Fig3Result run_fig3(const Fig3Plan& plan, Progress& progress) {
   const std::uint64_t shipped = firmware::load_config(plan.config).seed();
   const auto trials = static_cast<std::size_t>(plan.trials);
-  progress.begin("Fig. 3 (pb_woods)", 2 * trials);
+  const std::filesystem::path prior = plan.prior_map ? write_prior_map(plan.config, plan.work_dir) : std::filesystem::path();
+  progress.begin(plan.prior_map ? "Fig. 3 (pb_woods, prior map)" : "Fig. 3 (pb_woods, laser only)", 2 * trials);
   auto runs = run_indexed<MissionResult>(2 * trials, plan.threads, [&](std::size_t j) {
     const std::size_t trial = j / 2;
     MissionSpec spec;
@@ -68,6 +79,7 @@ Fig3Result run_fig3(const Fig3Plan& plan, Progress& progress) {
     spec.seed = trial == 0 ? shipped : derive_seed(plan.seed, 5000 + trial);
     spec.timeout_cap_s = plan.timeout_cap_s;
     spec.learned = j % 2 == 1;
+    spec.prior_map = prior;
     if (spec.learned) spec.experiences = plan.experiences;
     MissionResult r = run_mission(spec);
     progress.step(std::string(spec.learned ? "learned" : "baseline") + ", seed " + std::to_string(spec.seed) +
@@ -77,6 +89,7 @@ Fig3Result run_fig3(const Fig3Plan& plan, Progress& progress) {
   progress.end();
   Fig3Result f;
   f.n = plan.n;
+  f.prior_map = plan.prior_map;
   double sum = 0.0;
   for (std::size_t t = 0; t < trials; ++t) {
     Fig3Trial trial{runs[2 * t].summary.seed.value_or(0), std::move(runs[2 * t]), std::move(runs[2 * t + 1]),
@@ -112,8 +125,9 @@ void write_fig3_svg(const std::filesystem::path& path, const std::filesystem::pa
   std::ofstream out(path);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * kW
       << "\" height=\"" << 2 * kH + 30 << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"10\" y=\"20\" font-family=\"sans-serif\" font-size=\"16\">Fig. 3: the path in the woods, "
-      << "baseline against learned, simulator seed " << r.sim_seed << ": mission time cut "
+      << "<text x=\"10\" y=\"20\" font-family=\"sans-serif\" font-size=\"16\">Fig. 3: the path in the woods"
+      << (f.prior_map ? " (prior map)" : " (laser only)") << ", baseline against learned, simulator seed " << r.sim_seed
+      << ": mission time cut "
       << (std::isnan(r.cut_pct) ? std::string("n/a (a goal was not reached)") : fixed(r.cut_pct, 1) + " %") << "</text>\n";
   for (int i = 0; i < 4; ++i) {
     std::ostringstream place;

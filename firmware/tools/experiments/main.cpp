@@ -116,9 +116,11 @@ void run(Results& r, Progress& progress) {
   r.fig2 = run_fig2(fig2, progress);
 
   const std::size_t largest = *std::max_element(o.sizes.begin(), o.sizes.end());
-  r.fig3 = run_fig3(Fig3Plan{o.config_dir / "pb_woods.toml", write_subset(r.data.experiences, largest, o.seed, work),
-                             largest, o.seed, o.woods_trials, o.threads, o.timeout_cap_s},
-                    progress);
+  Fig3Plan fig3{o.config_dir / "pb_woods.toml", write_subset(r.data.experiences, largest, o.seed, work), largest,
+                work, true, o.seed, o.woods_trials, o.threads, o.timeout_cap_s};
+  r.fig3 = run_fig3(fig3, progress);
+  fig3.prior_map = false;
+  r.fig3_laser = run_fig3(fig3, progress);
 
   r.incremental = run_incremental(
       IncrementalPlan{{o.config_dir / "pb_test.toml", o.config_dir / "pb_woods.toml"}, work, o.repeats, o.seed, o.threads,

@@ -85,6 +85,7 @@ firmware::FirmwareConfig configure(const MissionSpec& spec) {
   p.learn_online = spec.learn_online;
   p.publish_every = spec.publish_every;
   p.record = spec.record;
+  p.prior_map = spec.prior_map;
   return cfg;
 }
 

@@ -29,6 +29,7 @@ struct MissionSpec {
   bool learn_online = false;
   int publish_every = 100;
   std::filesystem::path record;                // where this mission's experiences go (empty: nowhere)
+  std::filesystem::path prior_map;             // [planner] prior_map: what the planner knows before it drives (empty: nothing)
   /// Where the robot starts instead of the world's start (x, y, heading in degrees as the world
   /// file writes it: 0 = +y, 90 = +x). The mission then runs on copies of the configuration and
   /// the world, written to `work_dir` as `tag`.toml and `tag`.world.

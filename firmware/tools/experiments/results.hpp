@@ -20,7 +20,8 @@ struct Results {
   std::optional<LearnerRow> mlp;    // Table I's perceptron: builds with OpenCV's ml only
   std::vector<LearnerRow> table2;   // kNN k = 5 per n
   std::optional<Fig2Result> fig2;
-  std::optional<Fig3Result> fig3;
+  std::optional<Fig3Result> fig3;        // the planner given the woods' obstacles, as in the paper
+  std::optional<Fig3Result> fig3_laser;  // the same trials, the obstacles found by the laser alone
   std::vector<IncrementalChain> incremental;
 };
 
