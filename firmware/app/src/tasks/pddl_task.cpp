@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdarg>
 #include <cstdio>
+#include <filesystem>
 
 #include "ringlet/pddl/source_atom.hpp"
 
@@ -51,6 +52,12 @@ std::unique_ptr<executive::Task> PddlTask::make(TaskServices& services) {
   if (p.domain.empty()) {
     throw ConfigError(services.config.positions.at("pddl") +
                       ": pddl.domain: the table runs the pddl task, which needs a domain file");
+  }
+  // LOAD_PDDL reads the files later, on the service thread; a missing domain is a start-up error.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(p.domain, ec)) {
+    throw ConfigError(services.config.positions.at("pddl.domain") + ": pddl.domain: " + p.domain.string() +
+                      " is not a readable file");
   }
   return std::make_unique<PddlTask>(p, services.board, services.config.clock == ClockMode::kRealtime);
 }
