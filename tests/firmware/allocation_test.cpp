@@ -16,6 +16,19 @@ namespace {
 
 using ringlet::test::AllocationCounter;
 
+struct Allocations {
+  std::uint64_t cycle = 0;  // in the cycle's thread
+  std::uint64_t all = 0;    // in every thread (the workers' by design)
+};
+
+// Runs `frames` frames counting the allocations of the calling (cycle) thread and of all threads.
+Allocations count_allocations(executive::Executive& exec, std::uint64_t frames) {
+  ringlet::test::ThreadAllocationCounter thread;
+  AllocationCounter counter;
+  exec.run(frames);
+  return {thread.count(), counter.count()};
+}
+
 TEST(NoAllocation, TheCounterSeesAnAllocation) {
   // Guards the test below against a counter that never counts.
   AllocationCounter counter;
@@ -71,14 +84,8 @@ TEST(NoAllocation, TheLearnedModelLearningOnlineAllocatesNothingInTheCycle) {
   FirmwareStack stack(cfg);
   auto& exec = stack.executive();
   exec.run(1);
-  std::uint64_t cycle = 0, all = 0;
-  {
-    ringlet::test::ThreadAllocationCounter thread;
-    AllocationCounter counter;
-    exec.run(3000);  // 30 s: about 40 experiences, a rebuild every second once they come
-    cycle = thread.count();
-    all = counter.count();
-  }
+  // 30 s: about 40 experiences, a rebuild every second once they come
+  const auto [cycle, all] = count_allocations(exec, 3000);
   EXPECT_EQ(cycle, 0U) << "operator new was called in the cycle's thread";
   EXPECT_GT(all, 0U) << "the rebuilds (on the worker thread) allocate: the counter must have seen them";
   EXPECT_GT(stack.experiences().experiences().size(), 10U);
@@ -123,14 +130,8 @@ TEST(NoAllocation, ThePddlServiceAndPlanExecuteAllocateNothingInTheCycle) {
   FirmwareStack stack(cfg);
   auto& exec = stack.executive();
   exec.run(1);
-  std::uint64_t cycle = 0, all = 0;
-  {
-    ringlet::test::ThreadAllocationCounter thread;
-    AllocationCounter counter;
-    exec.run(3000);  // 30 s: the load, the first plan, the crates, the new problem, the re-plan
-    cycle = thread.count();
-    all = counter.count();
-  }
+  // 30 s: the load, the first plan, the crates, the new problem, the re-plan
+  const auto [cycle, all] = count_allocations(exec, 3000);
   EXPECT_EQ(cycle, 0U) << "operator new was called in the cycle's thread";
   EXPECT_GT(all, 0U) << "the service thread parses and grounds: the counter must have seen it";
   const ringlet::firmware::PddlTask* pddl = nullptr;
