@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "allocation_counter.hpp"
+#include "ringlet/firmware/tasks/pddl_task.hpp"
 #include "firmware_test_support.hpp"
 #include "ringlet/firmware/stack.hpp"
 
@@ -14,6 +15,19 @@ namespace ringlet::firmware {
 namespace {
 
 using ringlet::test::AllocationCounter;
+
+struct Allocations {
+  std::uint64_t cycle = 0;  // in the cycle's thread
+  std::uint64_t all = 0;    // in every thread (the workers' by design)
+};
+
+// Runs `frames` frames counting the allocations of the calling (cycle) thread and of all threads.
+Allocations count_allocations(executive::Executive& exec, std::uint64_t frames) {
+  ringlet::test::ThreadAllocationCounter thread;
+  AllocationCounter counter;
+  exec.run(frames);
+  return {thread.count(), counter.count()};
+}
 
 TEST(NoAllocation, TheCounterSeesAnAllocation) {
   // Guards the test below against a counter that never counts.
@@ -70,14 +84,8 @@ TEST(NoAllocation, TheLearnedModelLearningOnlineAllocatesNothingInTheCycle) {
   FirmwareStack stack(cfg);
   auto& exec = stack.executive();
   exec.run(1);
-  std::uint64_t cycle = 0, all = 0;
-  {
-    ringlet::test::ThreadAllocationCounter thread;
-    AllocationCounter counter;
-    exec.run(3000);  // 30 s: about 40 experiences, a rebuild every second once they come
-    cycle = thread.count();
-    all = counter.count();
-  }
+  // 30 s: about 40 experiences, a rebuild every second once they come
+  const auto [cycle, all] = count_allocations(exec, 3000);
   EXPECT_EQ(cycle, 0U) << "operator new was called in the cycle's thread";
   EXPECT_GT(all, 0U) << "the rebuilds (on the worker thread) allocate: the counter must have seen them";
   EXPECT_GT(stack.experiences().experiences().size(), 10U);
@@ -105,6 +113,34 @@ TEST(NoAllocation, CameraAndVisionAllocateNothingEither) {
   ASSERT_NE(stack.telemetry().vision(), nullptr);
   EXPECT_GT(stack.telemetry().vision()->frames, 95U);
   EXPECT_GT(stack.telemetry().vision()->lines, 0U);
+}
+
+}  // namespace
+}  // namespace ringlet::firmware
+
+namespace ringlet::firmware {
+namespace {
+
+// The PDDL planner service and the PlanExecute machine (issue 15) over the PDDL yard: the six
+// operations, the sliced searches, NEXT_ACTION's believed state, the hand-over of the tasks the
+// service thread grounds (LOAD_PDDL, then IS_OBSTACLE_KNOWN's new problem) and RE-PLAN. The
+// service thread allocates, by design (parsing, grounding): the cycle's thread is what is counted.
+TEST(NoAllocation, ThePddlServiceAndPlanExecuteAllocateNothingInTheCycle) {
+  const auto cfg = ringlet::firmware::load_config(test::kShippedConfig.parent_path() / "pddl_yard.toml");
+  FirmwareStack stack(cfg);
+  auto& exec = stack.executive();
+  exec.run(1);
+  // 30 s: the load, the first plan, the crates, the new problem, the re-plan
+  const auto [cycle, all] = count_allocations(exec, 3000);
+  EXPECT_EQ(cycle, 0U) << "operator new was called in the cycle's thread";
+  EXPECT_GT(all, 0U) << "the service thread parses and grounds: the counter must have seen it";
+  const ringlet::firmware::PddlTask* pddl = nullptr;
+  for (const auto& t : exec.tasks()) {
+    if (const auto* p = dynamic_cast<const ringlet::firmware::PddlTask*>(t.task)) pddl = p;
+  }
+  ASSERT_NE(pddl, nullptr);
+  EXPECT_EQ(pddl->counts().plans, 2U) << "the plan and the re-plan must fall in the counted frames";
+  EXPECT_EQ(pddl->counts().obstacles_added, 1U);
 }
 
 }  // namespace

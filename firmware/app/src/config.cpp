@@ -1,6 +1,8 @@
 #include "ringlet/firmware/config.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <optional>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -149,8 +151,8 @@ void read_goals(Section& mission, MissionSettings& m) {
 }
 
 void read_mission(Section& mission, MissionSettings& m) {
-  m.drive = mission.text("drive", "waypoints", {"waypoints", "navigate"}) == "navigate" ? DriveMode::kNavigate
-                                                                                     : DriveMode::kWaypoints;
+  const std::string drive = mission.text("drive", "waypoints", {"waypoints", "navigate", "pddl"});
+  m.drive = drive == "navigate" ? DriveMode::kNavigate : drive == "pddl" ? DriveMode::kPddl : DriveMode::kWaypoints;
   read_goals(mission, m);
   m.goal_tolerance = mission.number("goal_tolerance_m", m.goal_tolerance, 0.01, 10.0);
   m.timeout_s = mission.number("timeout_s", m.timeout_s, 0.01, kMaxRunSeconds);
@@ -170,6 +172,67 @@ void read_follower(Section& follower, behaviour::MoveToWaypointParams& f) {
     follower.fail_missing("min_speed", "the default min_speed exceeds max_speed; set min_speed");
   }
   follower.reject_unknown();
+}
+
+// places = [["p11", 3.0, 3.0], ...]: a place object of the problems and where it is (world, m).
+void read_places(Section& pddl, std::vector<pddl::Place>& places) {
+  const toml::node* n = pddl.find("places");
+  if (n == nullptr) return;
+  const toml::array* list = n->as_array();
+  if (list == nullptr) pddl.fail(*n, "places", "must be an array of [\"name\", x, y]");
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const toml::node& item = *list->get(i);
+    const toml::array* a = item.as_array();
+    const std::string key = "places[" + std::to_string(i) + "]";
+    const auto number = [&](std::size_t k) -> std::optional<double> {
+      const toml::node& c = *a->get(k);
+      if (const auto* v = c.as_integer()) return static_cast<double>(v->get());
+      if (const auto* v = c.as_floating_point(); v != nullptr && std::isfinite(v->get())) return v->get();
+      return std::nullopt;
+    };
+    if (a == nullptr || a->size() != 3 || a->get(0)->as_string() == nullptr || !number(1) || !number(2)) {
+      pddl.fail(item, key, "must be [\"name\", x, y]: a place object and finite coordinates (m)");
+    }
+    pddl::Place place{a->get(0)->as_string()->get(), *number(1), *number(2)};
+    for (char& c : place.name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (const pddl::Place& other : places) {
+      if (other.name == place.name) pddl.fail(item, key, "place " + place.name + " is listed twice");
+    }
+    places.push_back(std::move(place));
+  }
+}
+
+void read_pddl(Section& pddl, PddlSettings& p, const MissionSettings& mission, const behaviour::MoveToWaypointParams& follower,
+               const std::filesystem::path& base_dir) {
+  p.domain = pddl.path("domain", base_dir);
+  p.problems = pddl.path("problems", base_dir);
+  read_places(pddl, p.places);
+  p.obstacle_radius = pddl.number("obstacle_radius_m", p.obstacle_radius, 0.01, 100.0);
+  p.arena_kib = pddl.integer("arena_kib", p.arena_kib, 4, 1 << 20);
+  p.max_facts = pddl.integer("max_facts", p.max_facts, 1, 1 << 20);
+  p.max_operators = pddl.integer("max_operators", p.max_operators, 1, 1 << 24);
+  p.max_nodes = pddl.integer("max_nodes", p.max_nodes, 1, 10000000);
+  p.lama_restarts = pddl.integer("lama_restarts", p.lama_restarts, 0, 4);
+  p.units_per_slice = pddl.integer("units_per_slice", p.units_per_slice, 1, 1000000);
+  p.link.drop = pddl.number("link_drop", p.link.drop, 0.0, 0.9);
+  p.link.duplicate = pddl.number("link_duplicate", p.link.duplicate, 0.0, 1.0);
+  p.link.max_delay = pddl.integer("link_max_delay", p.link.max_delay, 0, 1000);
+  p.link.seed = pddl.unsigned_integer("link_seed", p.link.seed);
+  behaviour::PlanExecuteParams& m = p.machine;
+  m.planner = pddl.text("planner", m.planner, {"regression", "lama"});
+  m.problem = pddl.text("problem", m.problem);
+  m.depth = pddl.integer("depth", m.depth, 0, 1000000);
+  m.detect_range = pddl.number("detect_range_m", m.detect_range, 0.1, 100.0);
+  m.corridor = pddl.number("corridor_m", m.corridor, 0.01, 100.0);
+  m.tolerance = mission.goal_tolerance;
+  m.follower = follower;
+  if (mission.drive == DriveMode::kPddl && m.problem.empty()) {
+    pddl.fail_missing("problem", "[mission] drive = \"pddl\" needs the problem the machine loads");
+  }
+  if (mission.drive == DriveMode::kPddl && p.domain.empty()) {
+    pddl.fail_missing("domain", "[mission] drive = \"pddl\" needs a domain file");
+  }
+  pddl.reject_unknown();
 }
 
 void read_planner(Section& planner, PlannerSettings& p, const std::filesystem::path& base_dir) {
@@ -372,6 +435,8 @@ FirmwareConfig parse_config(std::string_view text, const std::string& source, co
   read_safety(safety, cfg.safety);
   Section planner = in("planner");
   read_planner(planner, cfg.planner, base_dir);
+  Section pddl = in("pddl");
+  read_pddl(pddl, cfg.pddl, cfg.mission, cfg.follower, base_dir);
   Section reactive = in("reactive");
   read_reactive(reactive, cfg.reactive);
   Section camera = in("camera");

@@ -89,6 +89,7 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, std::unique_ptr<hal::
       ball_tracker_(board_),
       mission_machine_(board_, config_.follower),
       navigate_machine_(board_),
+      plan_execute_(board_, config_.pddl.machine),
       safety_(board_, config_.safety.stop_range, config_.safety.release_range, config_.safety.hold_ms),
       fsm_bus_(board_),
       schedule_(stopwatch_, &fsm_bus_),
@@ -102,6 +103,8 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, std::unique_ptr<hal::
   if (config_.mission.ball_tracking) schedule_.add(ball_tracker_);
   if (config_.mission.drive == DriveMode::kNavigate) {
     schedule_.add(navigate_machine_);
+  } else if (config_.mission.drive == DriveMode::kPddl) {
+    schedule_.add(plan_execute_);
   } else {
     schedule_.add(mission_machine_);
   }

@@ -14,15 +14,18 @@
 #include <vector>
 
 #include "ringlet/behaviour/move_to_waypoint.hpp"
+#include "ringlet/behaviour/plan_execute.hpp"
 #include "ringlet/behaviour/reactive/voting.hpp"
 #include "ringlet/executive/realtime.hpp"
 #include "ringlet/executive/task_table.hpp"
+#include "ringlet/firmware/lossy_link.hpp"
 #include "ringlet/hal/camera.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/planning/cost_model.hpp"
 #include "ringlet/planning/knn_regressor.hpp"
 #include "ringlet/planning/learned_cost_model.hpp"
 #include "ringlet/planning/occupancy_grid.hpp"
+#include "ringlet/pddl/problem_edit.hpp"
 
 namespace ringlet::firmware {
 
@@ -59,7 +62,9 @@ struct CameraSettings {
 /// How the mission drives ([mission] drive): "waypoints" — the Mission machine steers straight at
 /// each goal (move_to_waypoint, [follower]); "navigate" — the Navigate machine follows the
 /// planner's regions (D* Lite, [planner]) with the arbiter's arcs (the reactive layer, [reactive]).
-enum class DriveMode { kWaypoints, kNavigate };
+/// "pddl" — the PlanExecute machine asks the PDDL planner service (the pddl task, [pddl]) for
+/// actions one by one and drives each to its place with move_to_waypoint ([follower]).
+enum class DriveMode { kWaypoints, kNavigate, kPddl };
 
 /// The mission ([mission]): waypoints in the world frame, visited in order.
 struct MissionSettings {
@@ -92,6 +97,24 @@ struct PlannerSettings {
 
   /// Whether the planner task records experiences at all.
   [[nodiscard]] bool records() const noexcept { return !record.empty() || learn_online; }
+};
+
+/// The PDDL planner service ([pddl], issue 15; planning/pddl/README.md) and what the
+/// PlanExecute machine asks it for. Only a configuration whose table runs the pddl task reads
+/// the files; the arenas and the planners' arrays are sized here at start-up.
+struct PddlSettings {
+  std::filesystem::path domain;    // the domain file (required with the pddl task)
+  std::filesystem::path problems;  // the folder LOAD_PDDL's names are looked up in (default: the domain's)
+  std::vector<pddl::Place> places;  // place objects and where they are (world frame, m)
+  double obstacle_radius = 0.6;     // m: IS_OBSTACLE_KNOWN blocks the connections passing this close
+  int arena_kib = 4096;             // each of the two grounding arenas
+  int max_facts = 4096;
+  int max_operators = 65536;
+  int max_nodes = 50000;            // search nodes of each planner
+  int lama_restarts = 0;            // weighted A* restarts after LAMA's first plan (0-4)
+  int units_per_slice = 200;        // planner expansions per activation (deterministic)
+  LossyLinkSettings link{};         // the seeded lossy channel between machine and service (tests)
+  behaviour::PlanExecuteParams machine{};  // what the PlanExecute machine asks for, its obstacle test
 };
 
 /// One backend's own section ([sim], ...), read and used by the backend factory only.
@@ -168,6 +191,7 @@ struct FirmwareConfig {
   std::vector<executive::TaskSpec> tasks;
   SafetyParams safety{};
   PlannerSettings planner{};
+  PddlSettings pddl{};
   behaviour::reactive::ReactiveParams reactive{};
   CameraSettings camera{};
   VisionSettings vision{};

@@ -14,6 +14,7 @@
 #include "ringlet/behaviour/llfsm/whiteboard_bus.hpp"
 #include "ringlet/behaviour/machines/ball_tracker.hpp"
 #include "ringlet/behaviour/machines/navigate.hpp"
+#include "ringlet/behaviour/machines/plan_execute.hpp"
 #include "ringlet/behaviour/machines/mission.hpp"
 #include "ringlet/behaviour/machines/safety.hpp"
 #include "ringlet/executive/event_log.hpp"
@@ -101,6 +102,7 @@ class FirmwareStack {
   behaviour::machines::BallTracker ball_tracker_;
   behaviour::machines::Mission mission_machine_;
   behaviour::machines::Navigate navigate_machine_;  // scheduled instead of Mission with [mission] drive = "navigate"
+  behaviour::machines::PlanExecute plan_execute_;  // ... with drive = "pddl"
   behaviour::machines::Safety safety_;
   behaviour::llfsm::WhiteboardFsmBus fsm_bus_;
   behaviour::llfsm::Schedule schedule_;
