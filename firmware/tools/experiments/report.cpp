@@ -100,8 +100,16 @@ bool describe_miss(std::ostringstream& md, const MissionResult& m) {
   const double to_goal = std::hypot(m.goals[goal].x - end.x, m.goals[goal].y - end.y);
   const double moved = std::hypot(end.x - quarter.x, end.y - quarter.y);
   md << "ended " << fixed(to_goal, 1) << " m from goal " << goal + 1 << " after " << fixed(m.summary.mission_seconds, 0)
-     << " s, having moved " << fixed(moved, 1) << " m (net) over the last quarter of its run"
-     << (moved < 1.0 ? ": boxed in among the trees" : ": still under way when the time limit ran out");
+     << " s, having moved " << fixed(moved, 1) << " m (net) over the last quarter of its run";
+  const bool unreachable = std::any_of(m.summary.machines.begin(), m.summary.machines.end(), [](const auto& s) {
+    return s.name == "Navigate" && s.state == "Unreachable";
+  });
+  if (unreachable) {
+    md << ": the planner found no way to the goal through the cells the laser had marked (Navigate ended in "
+          "Unreachable)";
+    return false;
+  }
+  md << (moved < 1.0 ? ": boxed in among the trees" : ": still under way when the time limit ran out");
   return moved < 1.0;
 }
 
