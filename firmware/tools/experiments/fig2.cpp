@@ -83,6 +83,10 @@ Fig2Result run_fig2(const Fig2Plan& plan, Progress& progress) {
       sys.goal_seconds.insert(sys.goal_seconds.end(), r.goal_seconds.begin(), r.goal_seconds.end());
       sys.reached += r.summary.goals_reached;
       sys.collisions += r.summary.collisions;
+      const Miss why = why_missed(r).kind;
+      sys.unreachable += why == Miss::kUnreachable ? 1U : 0U;
+      sys.boxed_in += why == Miss::kBoxedIn ? 1U : 0U;
+      sys.out_of_time += why == Miss::kOutOfTime ? 1U : 0U;
     }
     result.systems.push_back(std::move(sys));
   }

@@ -35,6 +35,7 @@ struct Fig2System {
   std::vector<double> goal_seconds;  // per goal of the sequence; -1: missed
   std::size_t reached = 0;
   std::uint64_t collisions = 0;
+  std::size_t unreachable = 0, boxed_in = 0, out_of_time = 0;  // the missed goals, by why_missed
 };
 
 struct Fig2Row {                     // a learned system against the baseline

@@ -95,6 +95,34 @@ double heading_deg(double ax, double ay, double bx, double by) {
   return std::round(std::atan2(bx - ax, by - ay) * 180.0 / 3.14159265358979323846);
 }
 
+MissReport why_missed(const MissionResult& r) {
+  MissReport m;
+  if (r.summary.complete || r.goals.empty()) return m;
+  m.goal = std::min(r.summary.goals_reached, r.goals.size() - 1);
+  const auto& t = r.trajectory;
+  if (!t.empty()) {
+    const hal::Pose2& end = t.back();
+    const hal::Pose2& quarter = t[t.size() - 1 - (t.size() - 1) / 4];
+    m.to_goal_m = std::hypot(r.goals[m.goal].x - end.x, r.goals[m.goal].y - end.y);
+    m.moved_m = std::hypot(end.x - quarter.x, end.y - quarter.y);
+  }
+  const bool unreachable = std::any_of(r.summary.machines.begin(), r.summary.machines.end(), [](const auto& s) {
+    return s.name == "Navigate" && s.state == "Unreachable";
+  });
+  m.kind = unreachable ? Miss::kUnreachable : m.moved_m < 1.0 ? Miss::kBoxedIn : Miss::kOutOfTime;
+  return m;
+}
+
+const char* describe(Miss kind) {
+  switch (kind) {
+    case Miss::kNone: return "reached";
+    case Miss::kUnreachable: return "the planner found no way to the goal through the cells the laser had marked (Navigate ended in Unreachable)";
+    case Miss::kBoxedIn: return "boxed in: it stopped moving among obstacles";
+    case Miss::kOutOfTime: return "still under way when the time limit ran out";
+  }
+  return "";
+}
+
 MissionResult run_mission(const MissionSpec& spec) {
   const firmware::FirmwareConfig cfg = configure(spec);
   firmware::FirmwareStack stack(cfg);

@@ -54,6 +54,19 @@ struct MissionResult {
   std::vector<hal::WorldPoint> goals;          // the goals flown, world frame
 };
 
+/// Why a mission missed its goal: the planner gave up (Navigate ended in Unreachable: no way
+/// through the cells the laser had marked), the robot was boxed in (it moved less than 1 m, net,
+/// over the last quarter of its recorded trajectory), or it was still under way at the time limit.
+enum class Miss { kNone, kUnreachable, kBoxedIn, kOutOfTime };
+struct MissReport {
+  Miss kind = Miss::kNone;
+  std::size_t goal = 0;        // the goal it was driving to (0-based)
+  double to_goal_m = 0;        // from where it ended
+  double moved_m = 0;          // net, over the last quarter of its run
+};
+[[nodiscard]] MissReport why_missed(const MissionResult& r);
+[[nodiscard]] const char* describe(Miss kind);
+
 /// Runs `spec` to the end (all goals, or the timeout). Throws firmware::ConfigError on a bad
 /// configuration or experience file, std::runtime_error when the recorded experiences could not
 /// be written.
