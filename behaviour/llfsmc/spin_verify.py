@@ -160,6 +160,7 @@ def main(argv=None):
     ap.add_argument("model")
     ap.add_argument("--work", required=True)
     ap.add_argument("--ringlets", type=int, default=1)
+    ap.add_argument("--period-ms", type=int, help="one turn of a single machine in ms (default: llfsmc's, 10)")
     ap.add_argument("--expect-fail", action="append", help="a property that must fail (repeatable)")
     ap.add_argument("--kripke", help="also write the reachable Kripke structure (turn-end states) as Graphviz")
     ap.add_argument("--kripke-max", type=int, default=400, help="refuse to draw more states than this")
@@ -171,6 +172,8 @@ def main(argv=None):
     cmd = [sys.executable, os.path.join(HERE, "llfsmc.py"), os.path.abspath(args.model), "--promela", pml]
     if not args.model.endswith(".schedule"):
         cmd += ["--ringlets", str(args.ringlets)]
+        if args.period_ms:
+            cmd += ["--period-ms", str(args.period_ms)]
     rc, out = run(cmd, args.work)
     if rc:
         sys.stdout.write(out)

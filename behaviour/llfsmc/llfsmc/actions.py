@@ -8,7 +8,7 @@ Statement kinds (Stmt.kind):
   temp     [const] T name = rhs;  a block-local constant (target = (name, None))
   request  suspend_machine("M");  resume_machine / restart_machine likewise
   if       if (cond) body [else body]
-  opaque   anything else (a call statement, a declaration without '=' ...): what it writes is not
+  opaque   anything else, and a whole loop (`for (...) body`, `while (...) body`) (a call statement, a declaration without '=' ...): what it writes is not
            known; it may only be dropped when it names nothing the properties depend on
 """
 
@@ -121,6 +121,13 @@ def split_statements(tokens):
             if k < len(tokens) and tokens[k].is_word("else"):
                 orelse, k = _branch(tokens, k + 1)
             out.append(Stmt("if", t.line, [t], cond=cond, body=body, orelse=orelse))
+        elif t.is_word("for", "while") and k + 1 < len(tokens) and tokens[k + 1].is_op("("):
+            # A loop is one opaque statement (header and body): what it writes depends on how often
+            # it runs, so the model checker only drops it (when it names nothing modelled).
+            j = _match(tokens, k + 1, "(", ")")
+            _, end = _branch(tokens, j + 1)
+            out.append(Stmt("opaque", t.line, tokens[k:end]))
+            k = end
         else:
             j = _statement_end(tokens, k)
             if j > k:

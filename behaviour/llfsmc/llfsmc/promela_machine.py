@@ -193,7 +193,8 @@ class MachineTx:
                 sub = dict(temps)
                 before = len(rel)
                 changed |= self.relevance_pass(st.body, sub, rel) | self.relevance_pass(st.orelse, dict(temps), rel)
-                if self.writes_relevant(st.body + st.orelse, rel):
+                if self.writes_relevant(st.body + st.orelse, rel) and \
+                        not self.writes_only_declared_sets(st.body + st.orelse, rel):
                     try:
                         cond = parse_action_expr(st.cond, (st.line, 1))
                         new = self.reads(cond, temps)
@@ -214,6 +215,19 @@ class MachineTx:
             if st.kind == "if" and self.writes_relevant(st.body + st.orelse, rel):
                 return True
         return False
+
+    def writes_only_declared_sets(self, stmts, rel):
+        """True if every modelled write in stmts is to a variable with a declared set (and nothing
+        requests): such an `if` is modelled as a choice of either branch, its condition unread
+        (the writes are nondeterministic over the set anyway; whether one happens is the choice)."""
+        for st in stmts:
+            if st.kind in ("assign", "incr") and self.target_key(st) in rel and self.target_key(st) not in self.domains:
+                return False
+            if st.kind == "request":
+                return False
+            if st.kind == "if" and not self.writes_only_declared_sets(st.body + st.orelse, rel):
+                return False
+        return True
 
     def token_keys(self, tokens):
         out = set()
@@ -379,6 +393,11 @@ class MachineTx:
             orelse = self.stmts_inner(st.orelse, dict(temps), where)
             if not body and not orelse:
                 return []
+            if self.writes_only_declared_sets(st.body + st.orelse, self.relevant):
+                self.note(f"{where} line {st.line}: 'if ( {' '.join(t.text for t in st.cond)} )' abstracted: either "
+                          "branch (it writes only variables with a declared set)")
+                return ["if :: true -> " + "; ".join(body or ["skip"]) + " :: true -> " +
+                        "; ".join(orelse or ["skip"]) + " fi"]
             try:
                 cond = parse_action_expr(st.cond, (st.line, 1))
             except SourceError as err:

@@ -71,6 +71,33 @@ ltl p: [] motion.stop
         self.assertIn("M_x_motion_stop = (M_x_laser_nearest_range < 500)", pml)
         self.assertNotIn("velocity", pml)
 
+    def test_a_loop_is_one_statement_dropped_when_it_names_nothing_modelled(self):
+        status, err, pml = export(HEAD + """local n : int = 0
+state A initial
+  Internal {
+    for (int i = 0; i < 3; ++i) { if (i == 1) continue; n += i; }
+    motion.stop = laser.nearest_range < 0.5;
+  }
+end
+ltl p: [] motion.stop
+""")
+        self.assertEqual((status, err), (0, []))
+        self.assertIn("M_x_motion_stop = (M_x_laser_nearest_range < 500)", pml)
+
+    def test_an_if_writing_only_declared_sets_is_either_branch(self):
+        status, err, pml = export(HEAD + """local seen : bool = false
+assume seen in {false, true}
+state A initial
+  Internal {
+    if (ringlet::behaviour::obstacle_ahead(laser.nearest_range)) { seen = true; }
+    motion.stop = seen;
+  }
+end
+ltl p: [] motion.stop
+""")
+        self.assertEqual((status, err), (0, []))
+        self.assertIn("if :: true -> if :: M_l_seen = 0 :: M_l_seen = 1 fi :: true -> skip fi", pml)
+
 
 class RingletOrder(unittest.TestCase):
     def test_guards_in_declared_order_then_internal_then_write_back(self):
