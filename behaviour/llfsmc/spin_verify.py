@@ -196,8 +196,9 @@ def main(argv=None):
     builds = ([("pan_safety", ["-DNOCLAIM", "-DSAFETY"])] if asserts or not ltl else []) + \
              ([("pan_ltl", ["-DNOREDUCE"])] if ltl else [])
     for exe, flags in builds:
-        # -O1: 2 s more to compile than -O0, half the search time on the schedules' products.
-        rc, out = run([args.cc, "-O1", "-w", *flags, "-DVECTORSZ=4096", "-o", exe, "pan.c"], args.work)
+        # -Og: the schedules' products search in half the time of -O0, and PlanExecute's pan.c
+        # compiles in 14 s (-O1: 37 s, -O0: 4 s but slower searches).
+        rc, out = run([args.cc, "-Og", "-w", *flags, "-DVECTORSZ=4096", "-o", exe, "pan.c"], args.work)
         if rc:
             print(out)
             print(f"{args.cc} failed to build pan")
@@ -207,6 +208,10 @@ def main(argv=None):
         runs.append(("assertions" + (f" ({', '.join(asserts)})" if asserts else ""), "assertions",
                      ["./pan_safety", "-m1000000", "-w20"]))
     runs += [(name, name, ["./pan_ltl", "-a", "-m1000000", "-w20", "-N", name]) for name in ltl]
+    if args.expect_fail:
+        # A planted bug shows that the named properties can fail; that the others hold is the
+        # shipped model's own run, so only the named ones are searched (the searches are the cost).
+        runs = [r for r in runs if any(r[1] == e or r[1].endswith("_" + e) for e in args.expect_fail)]
     failed, readable, results = [], {}, []
     for label, pname, command in runs:
         t0 = time.monotonic()
@@ -246,7 +251,7 @@ def main(argv=None):
         if status:
             return status
     if args.expect_fail:
-        # Exactly the expected properties fail (a machine's are named Machine_property), each with a
+        # Every expected property fails (a machine's are named Machine_property), each with a
         # counterexample that shows ringlets.
         def matches(f, e):
             return f == e or f.endswith("_" + e)
@@ -255,7 +260,7 @@ def main(argv=None):
         if wanted_ok and not extra and all(readable.get(f) for f in failed):
             print(f"as expected, {', '.join(args.expect_fail)} fail(s) with a readable counterexample")
             return 0
-        print(f"expected exactly {args.expect_fail} to fail with a readable counterexample; failed: {failed or 'none'}")
+        print(f"expected {args.expect_fail} to fail with a readable counterexample; failed: {failed or 'none'}")
         return 1
     return 1 if failed else 0
 

@@ -96,6 +96,16 @@ constexpr Golden kCourtyardNavigate{"courtyard_navigate.toml (whole mission)", 0
 constexpr Golden kPbTest{"pb_test.toml (30 s)", 0x434380399d21be1eULL, 0xd8b39aef1c1c38c2ULL};
 constexpr Golden kPbWoods{"pb_woods.toml (30 s)", 0x040f3c30a299764eULL, 0x6f6dbd611be22817ULL};
 
+// Plan, execute, re-plan (Mi-Pal Fig. 6): the PDDL yard's whole mission, the planner service's
+// thread handing its grounded tasks over at defined frames.
+constexpr Golden kPddlYard{"pddl_yard.toml (whole mission)", 0x92e6bcf1d9ede2f0ULL, 0xb982a9b0abc97045ULL};
+
+TEST(GoldenRun, PddlYardMission) {
+  const auto s = run(navigation("pddl_yard.toml", 0.0), kPddlYard.name);
+  EXPECT_TRUE(s.complete);
+  expect_golden(s, kPddlYard);
+}
+
 TEST(GoldenRun, CourtyardNavigateMission) {
   const auto s = run(navigation("courtyard_navigate.toml", 0.0), kCourtyardNavigate.name);
   EXPECT_TRUE(s.complete);
