@@ -51,6 +51,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
 
   // A candidate goes into the fixed list; when it is full, the farthest gives way.
   const auto nearer = [](const Candidate& a, const Candidate& b) {
+    if (a.pieces != b.pieces) return !a.pieces;
     return a.foot_row != b.foot_row ? a.foot_row > b.foot_row : a.x_max - a.x_min > b.x_max - b.x_min;
   };
   const auto push = [&](const Candidate& c) {
@@ -62,16 +63,13 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     auto farthest = std::max_element(cands_.begin(), cands_.end(), nearer);
     if (nearer(c, *farthest)) *farthest = c;
   };
-  // Ends a candidate: kept when it is about a robot wide at its foot.
+  // Ends a candidate: collected with its expected height; the width is judged after the pieces of
+  // one robot have been put together (below).
+  raw_count_ = 0;
   const auto finish = [&](Candidate c) {
     c.height_px = height_at(0.5 * (c.x_min + c.x_max + s), c.foot_row);
-    const double width = c.x_max - c.x_min + s;
-    const double expected_width = robot_box(c, s, params_).width;
-    if (c.height_px <= 0.0 || width < params_.min_width_share * expected_width ||
-        width > params_.max_width_share * expected_width) {
-      return;
-    }
-    push(c);
+    if (c.height_px <= 0.0) return;
+    if (raw_count_ < raw_.size()) raw_[raw_count_++] = c;
   };
   // The open candidate, and the columns beside it whose runs end higher up (a shadow): the field
   // between its legs when the open one goes on after them, else something farther away of its own.
@@ -181,6 +179,54 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     start(x, best_foot, eh);
   }
   while (has_open) close();
+  // Pieces of one robot: something nearer standing before it (a ball, a line seen through its legs)
+  // cuts its columns into pieces, each too narrow for a robot. Pieces whose foot rows agree and
+  // which together are no wider than a robot are put together (left to right; a narrow piece
+  // takes part in every merge, so two whole robots side by side stay apart).
+  for (std::size_t i = 1; i < raw_count_; ++i) {  // left to right (insertion sort: no allocation)
+    const Candidate c = raw_[i];
+    std::size_t j = i;
+    for (; j > 0 && raw_[j - 1].x_min > c.x_min; --j) raw_[j] = raw_[j - 1];
+    raw_[j] = c;
+  }
+  const auto width_of = [&](const Candidate& c) { return static_cast<double>(c.x_max - c.x_min + s); };
+  const auto expected_width_of = [&](const Candidate& c) { return robot_box(c, s, params_).width; };
+  const auto narrow = [&](const Candidate& c) { return width_of(c) < params_.min_width_share * expected_width_of(c); };
+  for (std::size_t i = 0; i < raw_count_; ++i) {
+    for (std::size_t j = i + 1; j < raw_count_;) {
+      Candidate& a = raw_[i];
+      const Candidate& b = raw_[j];
+      const Candidate& nearer_one = a.foot_row >= b.foot_row ? a : b;
+      const double eh = nearer_one.height_px;
+      const int tolerance = std::max(2 * s, static_cast<int>(params_.foot_tolerance_share * eh));
+      Candidate m = a;
+      m.x_min = std::min(a.x_min, b.x_min);
+      m.x_max = std::max(a.x_max, b.x_max);
+      m.foot_row = std::max(a.foot_row, b.foot_row);
+      m.columns = a.columns + b.columns;
+      m.pieces = true;
+      if (narrow(a) && narrow(b) && std::abs(a.foot_row - b.foot_row) <= tolerance &&
+          width_of(m) <= params_.merge_width_share * expected_width_of(nearer_one)) {
+        m.height_px = height_at(0.5 * (m.x_min + m.x_max + s), m.foot_row);
+        if (m.height_px > 0.0) {
+          a = m;
+          for (std::size_t q = j + 1; q < raw_count_; ++q) raw_[q - 1] = raw_[q];
+          --raw_count_;
+          j = i + 1;  // the merged candidate may now reach another piece
+          continue;
+        }
+      }
+      ++j;
+    }
+  }
+  // Kept when about a robot wide at its foot.
+  for (std::size_t i = 0; i < raw_count_; ++i) {
+    const Candidate& c = raw_[i];
+    const double width = width_of(c);
+    const double expected_width = expected_width_of(c);
+    if (width < params_.min_width_share * expected_width || width > params_.max_width_share * expected_width) continue;
+    push(c);
+  }
   out.candidates = static_cast<int>(count_);
   // Nearest first: the lowest foot row, then the wider (insertion sort: stable, no allocation). The
   // nearest obstacles matter most, and a near robot fills its window best.

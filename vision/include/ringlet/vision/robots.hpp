@@ -15,10 +15,13 @@
 // `join_share` of a NAO's width apart still join it. Columns beside it whose runs end higher up are
 // held apart (a shadow): the field between its legs when the candidate goes on after them, else
 // something farther away, a candidate of its own once the near one has ended (a robot half hidden
-// behind another). A candidate narrower than
+// behind another). Something nearer standing before a robot (a ball, a line seen between its
+// legs) cuts its columns into pieces: pieces that are each narrower than `min_width_share` of a
+// NAO's width, whose foot rows agree and that together are at most `merge_width_share` of it wide
+// are put together (ranked after the whole candidates). A candidate still narrower than
 // `min_width_share` of a NAO's width is a line or a post.
 //
-// Ranking: nearest first (lowest foot row, then the wider): the nearest obstacles matter most and
+// Ranking: whole candidates before pieces put together, then nearest first (lowest foot row, then the wider): the nearest obstacles matter most and
 // fill their windows best. On the 200 tuning frames val_s101 this alone took recall at 3 windows
 // from 0.21 (widest first) to 0.54, close to the 0.55 of classifying every candidate.
 //
@@ -45,6 +48,7 @@ namespace ringlet::vision {
 
 inline constexpr std::size_t kMaxRobots = 6;
 inline constexpr std::size_t kMaxRobotCandidates = 16;
+inline constexpr std::size_t kMaxRawRobotCandidates = 64;
 
 struct RobotParams {
   double height_m = 0.574;         // a standing NAO
@@ -58,6 +62,8 @@ struct RobotParams {
   double min_width_share = 0.15;   // candidate width / expected width (a NAO seen side on) ...
   double max_width_share = 3.0;    // ... at most this (two robots side by side; the floor beyond
                                    //   the carpet is a "non-field run on the field" too, but wide)
+  double merge_width_share = 1.0;  // pieces of one robot (cut by something before it) are joined
+                                   //   when together at most this × expected width
   double window_height = 64.0 / 56.0;  // window height / expected robot height (margin above and below)
   double foot_row = 60.0 / 64.0;   // where the foot lies in the window, as a share of its height
   double foot_depth_m = 0.1;       // the lowest non-field row is the feet's near edge (and shadow);
@@ -81,6 +87,7 @@ struct RobotCandidate {
   int foot_row = 0;          // lowest non-field row + step (the first field row below)
   int columns = 0;
   double height_px = 0.0;    // a standing NAO's image height at the foot point
+  bool pieces = false;       // put together from pieces too narrow alone (ranked after whole ones)
 };
 
 /// The image box of a standing NAO on candidate `c` (foot at the bottom centre of its columns;
@@ -130,6 +137,8 @@ class RobotDetector {
   int step_ = 1;
   std::array<Candidate, kMaxRobotCandidates> cands_{};
   std::size_t count_ = 0;
+  std::array<Candidate, kMaxRawRobotCandidates> raw_{};  // before the pieces are joined and judged
+  std::size_t raw_count_ = 0;
 };
 
 }  // namespace ringlet::vision
