@@ -28,6 +28,8 @@ constexpr const char* kOccupiedFill = "#8e2a1e";
 constexpr const char* kGoalColour = "#1e8c4a";
 constexpr const char* kStartFill = "#7b3fb5";
 constexpr const char* kCollisionStroke = "#d62020";
+constexpr const char* kPlaceColour = "#5a5a5a";
+constexpr const char* kReportedFill = "#f2c200";
 
 /// ~900 px across the world. A World that did not come from the parser may have empty bounds;
 /// it still gets a (meaningless but finite) picture rather than NaN coordinates.
@@ -43,7 +45,7 @@ class SvgPicture {
 
   std::string draw() {
     const double width = kWorldWidthPx + 2.0 * kMarginPx;
-    const double height = kMarginPx + world_px_height() + kFooterPx + (overlay_.plans.cell > 0.0 ? 24.0 : 0.0);
+    const double height = kMarginPx + world_px_height() + kFooterPx + (has_plan_row() ? 24.0 : 0.0);
     text_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"";
     attr("width", width);
     attr("height", height);
@@ -60,8 +62,10 @@ class SvgPicture {
     obstacles();
     ball();
     plan_map();
+    places();
     plans();
     trajectory();
+    reported();
     goals();
     start_pose();
     collisions();
@@ -266,6 +270,40 @@ class SvgPicture {
     }
   }
 
+  // A task planner's places: small rings named by their objects.
+  void places() {
+    const std::string style = std::string("fill=\"none\" stroke=\"") + kPlaceColour + "\" stroke-width=\"1.5\"";
+    for (const hal::NamedPoint& p : overlay_.plans.places) {
+      circle("place", px(p.at.x), py(p.at.y), 5.0, style);
+      label(px(p.at.x) + 7.0, py(p.at.y) - 7.0, "start", "class=\"place\" font-size=\"11\" fill=\"#5a5a5a\"", p.name);
+    }
+  }
+
+  // Where the controller told its planner of an obstacle: a yellow diamond with an edge.
+  void reported_mark(std::string_view cls, double x, double y) {
+    text_ += "<polygon class=\"";
+    text_ += cls;
+    text_ += "\" points=\"";
+    point(x, y - 8.0);
+    text_ += ' ';
+    point(x + 8.0, y);
+    text_ += ' ';
+    point(x, y + 8.0);
+    text_ += ' ';
+    point(x - 8.0, y);
+    text_ += "\" fill=\"";
+    text_ += kReportedFill;
+    text_ += "\" stroke=\"#222222\" stroke-width=\"1.2\"/>\n";
+  }
+
+  void reported() {
+    for (const hal::WorldPoint& r : overlay_.plans.reported) reported_mark("reported", px(r.x), py(r.y));
+  }
+
+  [[nodiscard]] bool has_plan_row() const noexcept {
+    return overlay_.plans.cell > 0.0 || !overlay_.plans.plan_ends.empty();
+  }
+
   // The first plan solid, every later one (a replan, or the plan to the next goal) faded.
   void plans() {
     const hal::PlanPicture& m = overlay_.plans;
@@ -365,15 +403,27 @@ class SvgPicture {
     x += step;
     cross_mark("legend", x, y, 6.0);
     label(x + 14.0, y + 4.5, "start", "", "collision");
-    if (overlay_.plans.cell > 0.0) {  // a second row: the planner's picture
+    if (has_plan_row()) {  // a second row: the planner's picture
       const double y2 = y + 24.0;
       double x2 = left + 8.0;
       line("legend", x2 - 8.0, y2, x2 + 8.0, y2,
            std::string("stroke=\"") + kPlanStroke + "\" stroke-width=\"2.5\" stroke-dasharray=\"6 4\"");
       label(x2 + 14.0, y2 + 4.5, "start", "", "first plan (later plans faded)");
       x2 += 2.0 * step;
-      rect("legend", x2 - 5.0, y2 - 5.0, 10.0, 10.0, std::string("fill=\"") + kOccupiedFill + '"');
-      label(x2 + 14.0, y2 + 4.5, "start", "", "occupied cell (planner's map; grid: regions)");
+      if (overlay_.plans.cell > 0.0) {
+        rect("legend", x2 - 5.0, y2 - 5.0, 10.0, 10.0, std::string("fill=\"") + kOccupiedFill + '"');
+        label(x2 + 14.0, y2 + 4.5, "start", "", "occupied cell (planner's map; grid: regions)");
+        x2 += 2.5 * step;
+      }
+      if (!overlay_.plans.places.empty()) {
+        circle("legend", x2, y2, 5.0, std::string("fill=\"none\" stroke=\"") + kPlaceColour + "\" stroke-width=\"1.5\"");
+        label(x2 + 14.0, y2 + 4.5, "start", "", "place (PDDL object)");
+        x2 += 1.5 * step;
+      }
+      if (!overlay_.plans.reported.empty()) {
+        reported_mark("legend", x2, y2);
+        label(x2 + 14.0, y2 + 4.5, "start", "", "obstacle reported to the planner");
+      }
     }
   }
 

@@ -199,7 +199,41 @@ struct ScenarioRun {
   executive::TaskStats pddl{};
   PddlServiceCounts counts{};
   LossyLinkCounts requests{}, replies{};
+  std::vector<std::vector<hal::WorldPoint>> plans;  // as pddl_record drew them
+  std::vector<hal::WorldPoint> reported;
 };
+
+// The plans pddl_record drew, one polyline per plan number, and the reported obstacles.
+void copy_picture(const hal::PlanPicture& p, ScenarioRun& r) {
+  std::size_t begin = 0;
+  for (const std::uint32_t end : p.plan_ends) {
+    r.plans.emplace_back(p.plan_points.begin() + static_cast<std::ptrdiff_t>(begin),
+                         p.plan_points.begin() + static_cast<std::ptrdiff_t>(end));
+    begin = end;
+  }
+  r.reported.assign(p.reported.begin(), p.reported.end());
+}
+
+// The places of yard.pddl ([pddl] places in pddl_yard.toml): column c, row r.
+hal::WorldPoint place(int c, int row) { return {3.0 + 4.5 * (c - 1), 3.0 + 4.0 * (row - 1)}; }
+
+void expect_the_yards_two_plans(const ScenarioRun& r) {
+  const std::vector<hal::WorldPoint> first{place(1, 1), place(2, 1), place(3, 1), place(4, 1)};
+  const std::vector<hal::WorldPoint> second{place(3, 1), place(3, 2), place(3, 3), place(4, 3), place(4, 2), place(4, 1)};
+  ASSERT_EQ(r.plans.size(), 2U) << "the first plan and the re-plan from p31, each drawn once";
+  const auto same = [](const std::vector<hal::WorldPoint>& a, const std::vector<hal::WorldPoint>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i].x != b[i].x || a[i].y != b[i].y) return false;
+    return true;
+  };
+  EXPECT_TRUE(same(r.plans[0], first)) << "straight along the bottom row to p41";
+  EXPECT_TRUE(same(r.plans[1], second)) << "round the crates and the known wall";
+  ASSERT_EQ(r.reported.size(), 1U) << "one IS_OBSTACLE_KNOWN, however often it was sent";
+  EXPECT_GT(r.reported[0].x, place(3, 1).x);
+  EXPECT_LT(r.reported[0].x, place(4, 1).x);
+  EXPECT_NEAR(r.reported[0].y, place(3, 1).y, 1.0) << "on the leg p31 -> p41";
+}
 
 ScenarioRun run_yard(const std::string& extra = {}) {
   std::string text = test::shipped_config_text(kYardConfig);
@@ -221,6 +255,7 @@ ScenarioRun run_yard(const std::string& extra = {}) {
       r.replies = p->replies_link();
     }
   }
+  copy_picture(stack.telemetry().plan_picture(), r);
   return r;
 }
 
@@ -234,6 +269,7 @@ TEST(PddlScenario, TheYardCompletesInLockstepAfterReplanningAroundTheCrates) {
   EXPECT_EQ(r.counts.plans, 2U) << "START_PLANNER, then RE-PLAN from p31";
   EXPECT_EQ(r.counts.stale, 0U);
   EXPECT_LT(r.summary.mission_seconds, 60.0);
+  expect_the_yards_two_plans(r);
   std::printf("pddl_yard: %.2f s, %.1f m, trajectory %016llx run %016llx, pddl model max %lld ns, units max %u\n",
               r.summary.mission_seconds, r.summary.distance_m, static_cast<unsigned long long>(r.summary.trajectory_hash),
               static_cast<unsigned long long>(r.summary.run_hash), static_cast<long long>(r.pddl.model.max().count()),
@@ -262,6 +298,7 @@ TEST(PddlScenario, ALossyLinkThatDropsRepeatsAndReordersStillCompletesTheMission
   EXPECT_GT(r.requests.duplicated + r.replies.duplicated, 0U);
   EXPECT_GT(r.counts.repeated, 0U) << "lost replies are answered again from the id";
   EXPECT_GT(r.counts.stale, 0U) << "late copies of older requests arrive and are ignored";
+  expect_the_yards_two_plans(r);
   std::printf("lossy: requests %llu pushed %llu dropped %llu duplicated; replies %llu pushed %llu dropped; "
               "repeated %llu stale %llu; %.2f s\n",
               static_cast<unsigned long long>(r.requests.pushed), static_cast<unsigned long long>(r.requests.dropped),

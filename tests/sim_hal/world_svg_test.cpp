@@ -135,6 +135,33 @@ TEST(SimSvg, DrawsEveryKindOfThing) {
   EXPECT_NE(svg.find("fill=\"#6aa84f\""), std::string::npos);  // grass under the markings
 }
 
+// A task planner's picture has no map: its places by name, its plans through them and the obstacles
+// the controller reported, with a legend row for what is there and none for a map it lacks.
+TEST(SimSvg, DrawsATaskPlannersPlacesPlansAndReportedObstacles) {
+  const World world = picture_world();
+  const std::vector<hal::NamedPoint> places = {{{2.0, 2.0}, "p11"}, {{6.0, 2.0}, "p<21>"}, {{6.0, 6.0}, "p22"}};
+  const std::vector<hal::WorldPoint> points = {{2.0, 2.0}, {6.0, 2.0}, {6.0, 2.0}, {6.0, 6.0}};
+  const std::vector<std::uint32_t> ends = {2, 4};
+  const std::vector<hal::WorldPoint> reported = {{4.0, 2.1}};
+  hal::RunPicture overlay = with_goals();
+  overlay.plans.places = places;
+  overlay.plans.plan_points = points;
+  overlay.plans.plan_ends = ends;
+  overlay.plans.reported = reported;
+  const std::string svg = render(world, overlay);
+  EXPECT_EQ(count(svg, "class=\"place\""), 6U) << "a ring and a name each";
+  EXPECT_NE(svg.find(">p&lt;21&gt;</text>"), std::string::npos);
+  EXPECT_EQ(count(svg, "class=\"plan\""), 2U);
+  EXPECT_EQ(count(svg, "class=\"reported\""), 1U);
+  EXPECT_NE(svg.find(">place (PDDL object)</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">obstacle reported to the planner</text>"), std::string::npos);
+  EXPECT_EQ(svg.find("occupied cell"), std::string::npos) << "no map, no map legend";
+  EXPECT_EQ(svg.find("class=\"region-grid\""), std::string::npos);
+  const std::string plain = render(world, with_goals());
+  EXPECT_EQ(plain.find("first plan"), std::string::npos) << "no planner, no planner row";
+  EXPECT_LT(std::stod(attribute(plain, "height")), std::stod(attribute(svg, "height")));
+}
+
 TEST(SimSvg, DrawsPaintedRingsAsCirclesOnGrass) {
   World world = test::box_world(10.0, 10.0, {1.0, 1.0, 0.0});
   world.rings.push_back(Ring{{5.0, 5.0}, 0.75, 0.05});

@@ -6,6 +6,7 @@
 #include "ringlet/firmware/tasks/fsm_task.hpp"
 #include "ringlet/firmware/tasks/goals_task.hpp"
 #include "ringlet/firmware/tasks/plan_record_task.hpp"
+#include "ringlet/firmware/tasks/pddl_record_task.hpp"
 #include "ringlet/firmware/tasks/pddl_task.hpp"
 #include "ringlet/firmware/tasks/planner_task.hpp"
 #include "ringlet/firmware/tasks/sense_task.hpp"
@@ -35,6 +36,7 @@ TaskRegistry production_tasks() {
   registry.add<TelemetryTask>();
   registry.add<PlanRecordTask>();
   registry.add<PddlTask>();
+  registry.add<PddlRecordTask>();
   registry.add<WhiteboardTask>();
   return registry;
 }

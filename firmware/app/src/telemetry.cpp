@@ -73,6 +73,23 @@ void Telemetry::record_plan(std::span<const hal::WorldPoint> path) noexcept {
   ++plans_.plans;
 }
 
+void Telemetry::extend_last_plan(const hal::WorldPoint& p) noexcept {
+  if (plans_.ends.empty() || plans_.points.size() == plans_.points.capacity()) {
+    ++plans_.dropped;
+    return;
+  }
+  plans_.points.push_back(p);
+  plans_.ends.back() = static_cast<std::uint32_t>(plans_.points.size());
+}
+
+void Telemetry::record_reported_obstacle(const hal::WorldPoint& p) noexcept {
+  if (plans_.reported.size() == plans_.reported.capacity()) {
+    ++plans_.dropped;
+    return;
+  }
+  plans_.reported.push_back(p);
+}
+
 void Telemetry::record_missed_plans(std::uint64_t n) noexcept { plans_.missed_posts += n; }
 
 hal::PlanPicture Telemetry::plan_picture() const noexcept {
@@ -81,6 +98,8 @@ hal::PlanPicture Telemetry::plan_picture() const noexcept {
   p.occupied = plans_.cells;
   p.plan_points = plans_.points;
   p.plan_ends = plans_.ends;
+  p.places = plans_.places;
+  p.reported = plans_.reported;
   return p;
 }
 

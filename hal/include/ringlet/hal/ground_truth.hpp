@@ -19,6 +19,12 @@ struct WorldPoint {
   double y = 0.0;
 };
 
+/// A named point in the world frame: a PDDL problem's place.
+struct NamedPoint {
+  WorldPoint at{};
+  std::string_view name;
+};
+
 /// The planner's map and plans, as the run recorded them (all empty when it had no planner).
 struct PlanPicture {
   WorldPoint origin{};   // the grid's lower-left corner (m)
@@ -27,6 +33,8 @@ struct PlanPicture {
   std::span<const std::uint32_t> occupied;   // occupied cells: row · width_cells + column
   std::span<const WorldPoint> plan_points;   // every recorded plan's path, one after the other
   std::span<const std::uint32_t> plan_ends;  // plan i is plan_points[plan_ends[i-1] .. plan_ends[i])
+  std::span<const NamedPoint> places;        // a task planner's places (PDDL objects), if any
+  std::span<const WorldPoint> reported;      // obstacles the controller reported to its planner
 };
 
 /// What the controller did, to be drawn over the world.

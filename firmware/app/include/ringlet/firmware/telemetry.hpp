@@ -37,6 +37,8 @@ struct PlanTrack {
   std::vector<std::uint32_t> cells;
   std::vector<hal::WorldPoint> points;
   std::vector<std::uint32_t> ends;
+  std::vector<hal::NamedPoint> places;      // the names point into the configuration
+  std::vector<hal::WorldPoint> reported;    // obstacles reported to the planner
   std::uint64_t plans = 0;          // plans recorded
   std::uint64_t dropped = 0;        // cells or plans that did not fit (counted, not stored)
   std::uint64_t missed_posts = 0;   // Plan generations overwritten before they were read
@@ -59,6 +61,9 @@ class Telemetry {
   PlanTrack& enable_plans(const hal::PlanPicture& geometry, std::size_t cells, std::size_t plans, std::size_t points_per_plan);
   void record_map_cell(std::uint32_t cell) noexcept;
   void record_plan(std::span<const hal::WorldPoint> path) noexcept;
+  /// Extends the last plan recorded by one point (a task plan drawn as its actions come).
+  void extend_last_plan(const hal::WorldPoint& p) noexcept;
+  void record_reported_obstacle(const hal::WorldPoint& p) noexcept;
   void record_missed_plans(std::uint64_t n) noexcept;
   [[nodiscard]] const PlanTrack* plans() const noexcept { return plans_enabled_ ? &plans_ : nullptr; }
   /// The map and the plans for the picture (an empty PlanPicture without a planner).
