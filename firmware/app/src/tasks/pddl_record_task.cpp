@@ -50,22 +50,9 @@ void PddlRecordTask::on_request(const wb::PddlRequest& request) noexcept {
 }
 
 void PddlRecordTask::run(const executive::TaskContext& /*ctx*/) noexcept {
-  const auto drain = [this](auto tag, std::uint64_t& seen, auto&& handle) {
-    using Message = typename decltype(tag)::type;
-    const std::uint64_t newest = board_.generation<Message>();
-    for (std::uint64_t g = seen + 1; g <= newest; ++g) {
-      const auto r = board_.read<Message>(g);
-      if (r.ok()) {
-        handle(r.msg);
-      } else if (r.status == wb::ReadStatus::kMissed) {
-        telemetry_.record_missed_plans(r.missed);
-        g += r.missed > 0 ? r.missed - 1 : 0;
-      }
-    }
-    seen = newest;
-  };
-  drain(std::type_identity<wb::PddlRequest>{}, requests_seen_, [this](const wb::PddlRequest& m) { on_request(m); });
-  drain(std::type_identity<wb::PddlReply>{}, replies_seen_, [this](const wb::PddlReply& m) { on_reply(m); });
+  const auto missed = [this](std::uint64_t n) { telemetry_.record_missed_plans(n); };
+  board_.read_since<wb::PddlRequest>(requests_seen_, [this](const wb::PddlRequest& m) { on_request(m); }, missed);
+  board_.read_since<wb::PddlReply>(replies_seen_, [this](const wb::PddlReply& m) { on_reply(m); }, missed);
 }
 
 }  // namespace ringlet::firmware

@@ -33,17 +33,9 @@ void PlanRecordTask::record(const wb::Plan& plan) noexcept {
 }
 
 void PlanRecordTask::run(const executive::TaskContext& /*ctx*/) noexcept {
-  const std::uint64_t newest = board_.generation<wb::Plan>();
-  for (std::uint64_t g = seen_ + 1; g <= newest; ++g) {
-    const auto r = board_.read<wb::Plan>(g);
-    if (r.ok()) {
-      record(r.msg);
-    } else if (r.status == wb::ReadStatus::kMissed) {
-      telemetry_.record_missed_plans(r.missed);
-      g += r.missed > 0 ? r.missed - 1 : 0;
-    }
-  }
-  seen_ = newest;
+  board_.read_since<wb::Plan>(
+      seen_, [this](const wb::Plan& plan) { record(plan); },
+      [this](std::uint64_t n) { telemetry_.record_missed_plans(n); });
 }
 
 }  // namespace ringlet::firmware

@@ -84,6 +84,23 @@ class Whiteboard {
   [[nodiscard]] ReadResult<T> read(std::uint64_t gen) const noexcept {
     return channel<T>().ring.read(gen);
   }
+  /// Every generation of T after `seen`, oldest first, to `on_message(const T&)`; generations the
+  /// ring no longer holds are counted to `on_missed(n)`. Sets `seen` to the newest generation: a
+  /// reader that polls (a recording task) misses nothing the ring still holds, and allocates nothing.
+  template <Message T, class OnMessage, class OnMissed>
+  void read_since(std::uint64_t& seen, OnMessage&& on_message, OnMissed&& on_missed) const noexcept {
+    const std::uint64_t newest = generation<T>();
+    for (std::uint64_t g = seen + 1; g <= newest; ++g) {
+      const ReadResult<T> r = read<T>(g);
+      if (r.ok()) {
+        on_message(r.msg);
+      } else if (r.status == ReadStatus::kMissed) {
+        on_missed(r.missed);
+        g += r.missed > 0 ? r.missed - 1 : 0;
+      }
+    }
+    seen = newest;
+  }
 
   /// Start-up only (allocates). Delivery starts with the first generation posted after this call.
   template <Message T>
