@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <vector>
 
 #include "ringlet/whiteboard/whiteboard.hpp"
 
@@ -52,6 +53,30 @@ TEST(WbGenerations, OverrunReportsExactlyHowManyWereMissed) {
     EXPECT_EQ(wb.read<Pose>(g + r.missed).status, ReadStatus::kOk);
   }
   EXPECT_EQ(wb.read<Pose>(8).msg, pose(8));
+}
+
+// A polling reader gets every generation the ring still holds, oldest first, and one count of
+// those it lost; a second call with nothing new posted reads nothing.
+TEST(WbGenerations, ReadSinceDeliversEveryHeldGenerationAndCountsTheLost) {
+  Whiteboard wb(4);
+  std::uint64_t seen = 0;
+  std::vector<double> got;
+  std::uint64_t lost = 0;
+  const auto take = [&got](const Pose& p) { got.push_back(p.x); };
+  const auto count = [&lost](std::uint64_t n) { lost += n; };
+  wb.post(pose(1));
+  wb.post(pose(2));
+  wb.read_since<Pose>(seen, take, count);
+  EXPECT_EQ(got, (std::vector<double>{1.0, 2.0}));
+  EXPECT_EQ(seen, 2U);
+  for (std::uint64_t k = 3; k <= 11; ++k) wb.post(pose(k));  // ring holds 8..11: 3..7 are lost
+  wb.read_since<Pose>(seen, take, count);
+  EXPECT_EQ(got, (std::vector<double>{1.0, 2.0, 8.0, 9.0, 10.0, 11.0}));
+  EXPECT_EQ(lost, 5U);
+  EXPECT_EQ(seen, 11U);
+  wb.read_since<Pose>(seen, take, count);
+  EXPECT_EQ(got.size(), 6U);
+  EXPECT_EQ(lost, 5U);
 }
 
 TEST(WbGenerations, DepthIsRoundedUpToAPowerOfTwo) {
