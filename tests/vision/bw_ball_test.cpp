@@ -3,6 +3,7 @@
 // with that radius, and a robot-shaped column standing on the field is found at its foot point.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "ringlet/vision/bw_ball.hpp"
@@ -109,6 +110,57 @@ TEST(BwBall, BlackPatchesRankTheBallAboveAPlainWhiteBlob) {
   EXPECT_GT(best.roundness, 0.5);
   ASSERT_GT(out.count, 0U);
   EXPECT_NEAR(out.balls[0].centre.u, ball->u, 0.25 * r);
+}
+
+// A ball half cut off by the image's left, right or bottom edge (its centre on the edge: the least
+// an expected ball shows) is proposed at its true centre, within the evaluation's match radius of
+// half its radius: the middle of the part seen lies half a radius off, so the candidate is placed a
+// radius inside the part seen. (Before, the bottom case had no candidate within that radius.)
+TEST(BwBall, ABallCutByTheImageEdgeIsCentredARadiusInside) {
+  Camera cam;
+  const hal::CameraPose pose = cam.pose();
+  // The ground point at distance x whose ball centre projects to column u (bisection on y), or
+  // straight ahead, the distance whose ball centre projects to row v.
+  const auto at_column = [&](double x, double u) {
+    double lo = -3.0, hi = 3.0;  // y left positive: u falls as y grows
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      const auto px = hal::project(cam.k, pose, {x, mid, 0.05});
+      (px.has_value() && px->u > u ? lo : hi) = mid;
+    }
+    return hal::RobotPoint{x, 0.5 * (lo + hi)};
+  };
+  const auto at_row = [&](double v) {
+    double lo = 0.2, hi = 3.0;  // v falls as x grows
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      const auto px = hal::project(cam.k, pose, {mid, 0.0, 0.05});
+      (px.has_value() && px->v > v ? lo : hi) = mid;
+    }
+    return hal::RobotPoint{0.5 * (lo + hi), 0.0};
+  };
+  const double w = cam.k.width, h = cam.k.height;
+  const struct {
+    const char* edge;
+    hal::RobotPoint at;
+  } cases[] = {{"left", at_column(1.0, 0.0)}, {"right", at_column(1.0, w)}, {"bottom", at_row(h)}};
+  for (const auto& c : cases) {
+    testing::Scene scene = testing::field_scene();
+    scene.ball = c.at;
+    scene.ball_black_white = true;
+    BwBallDetector d(BwBallParams{});
+    BallList out;
+    ASSERT_NO_FATAL_FAILURE(detect_unverified(scene, cam, d, out));
+    const auto truth = hal::project(cam.k, pose, {c.at.x, c.at.y, 0.05});
+    ASSERT_TRUE(truth.has_value());
+    const double r = d.expected_radius_px(cam.k, pose, *truth);
+    double nearest = 1e9;
+    for (const BallCandidate& cand : d.candidates()) {
+      nearest = std::min(nearest, std::hypot(cand.centre.u - truth->u, cand.centre.v - truth->v));
+    }
+    EXPECT_LE(nearest, 0.5 * r) << c.edge << " edge: ball at " << truth->u << ", " << truth->v << " r " << r << ", "
+                                << d.candidates().size() << " candidates";
+  }
 }
 
 // A robot drawn as a white column in the image, standing at a ground point: its foot row from the

@@ -194,6 +194,13 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
     const double height = bottom - top + s;
     double cy = 0.5 * (top + bottom + s);
     if (height > params_.max_extent * d) cy = cy_guess;
+    // A ball cut by the image's edge: its centre lies a radius inside the part seen (the middle of
+    // that part lies up to half a radius off).
+    if (width < d) {
+      if (left < s && right + s < classes.width()) cx = right + s - r;
+      if (right + s >= classes.width() && left >= s) cx = left + r;
+    }
+    if (height < d && bottom + s >= h) cy = top + r;
     double r2 = expected_radius_px(k, pose, {cx, cy});
     if (r2 < params_.min_radius_px) return;
     // The neighbouring columns of a blob already outlined give the same candidate: not refined again.
@@ -233,6 +240,8 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
         const double d = 2.0 * r;
         if (len >= params_.min_extent * d && len <= params_.max_extent * d) {
           consider(x, mid);
+        } else if (y >= h && len >= params_.min_cut_extent * d && len < params_.min_extent * d) {
+          consider(x, run_start + r);  // cut by the bottom edge: the ball's top is seen
         } else if (len > params_.max_extent * d && y < h) {
           // Too long: a ball may stand in front of whatever continues above it.
           const double rb = expected_radius_px(k, pose, {x + 0.5 * s, y - r});

@@ -7,7 +7,9 @@
 // black patches as other). The camera model gives, for the run's centre, the radius a ball there
 // would have, r = fx·R / depth (the ray meets the plane z = R at the ball's centre); a run is a
 // candidate when its length is 0.6–1.6 × 2r. A run that is too long (a ball in front of a robot's
-// feet or on a line seen lengthwise) gives a candidate at its bottom. Each candidate is re-centred
+// feet or on a line seen lengthwise) gives a candidate at its bottom. A ball cut by the image's
+// left, right or bottom edge is centred a radius inside the part seen (from its top when the
+// bottom edge cuts it; such a run needs only 0.3 × 2r). Each candidate is re-centred
 // along its row and column, then refined on its outline: 16 rays from the centre walk the class
 // image to the first two field samples; rays that end within `max_extent` × r give outline points
 // (rays running on into a line, a robot or the image's border give none), and a circle of the
@@ -42,6 +44,7 @@ struct BwBallParams {
   double min_radius_px = 3.0;      // smaller expected balls (≈ 10 m on the NAO) are not looked for
   double min_extent = 0.6;         // run length / expected diameter, accepted range
   double max_extent = 1.6;
+  double min_cut_extent = 0.3;     // a run cut by the image's bottom edge: shortest accepted (the ball's top)
   double window_diameters = 1.6;   // HOG window side / expected ball diameter
   double merge_radii = 1.0;        // candidates closer than this × r merge
   int min_outline_points = 6;      // of 16 rays, for the outline to re-centre a candidate
@@ -65,7 +68,9 @@ struct BallCandidate {
   double extent = 0.0;    // how well the blob's extent matches the expected diameter (0..1]
   double roundness = 0.0; // share of the rays ending on an outline, × how well it fits the circle
   double contrast = 0.0;  // (bright − dark) / bright inside: the black patches on white
-  [[nodiscard]] double rank() const noexcept { return (0.5 + extent) * (0.25 + roundness) * contrast * contrast; }
+  // Extent and roundness are read from the class image, which breaks where the ball's shaded white
+  // passes for carpet; contrast, from the luminance, weighs most.
+  [[nodiscard]] double rank() const noexcept { return (1.0 + extent) * (0.5 + roundness) * contrast * contrast; }
 };
 
 class BwBallDetector {
