@@ -45,11 +45,13 @@ ringlet_layer(behaviour   FOLDER behaviour          USES hal whiteboard
   WHY "algorithm layers use hal/ and the whiteboard only: never a backend, another algorithm layer or firmware/")
 ringlet_layer(planning    FOLDER planning           USES hal whiteboard
   WHY "algorithm layers use hal/ and the whiteboard only: never a backend, another algorithm layer or firmware/")
+ringlet_layer(localization FOLDER localization     USES hal
+  WHY "self-localization is an algorithm: hal/'s plain types only, never the whiteboard, a backend, another algorithm layer or firmware/")
 ringlet_layer(tools       FOLDER tools              USES hal whiteboard sim_hal vision
   WHY "desktop tools (the dataset writer) may use the simulator and vision, never firmware/")
-ringlet_layer(firmware    FOLDER firmware           USES hal whiteboard remote executive sim_hal vision behaviour planning
+ringlet_layer(firmware    FOLDER firmware           USES hal whiteboard remote executive sim_hal vision behaviour planning localization
   WHY "firmware/ composes every layer the robot runs; no desktop tool, no test code")
-ringlet_layer(tests       FOLDER tests              USES hal whiteboard remote executive sim_hal vision behaviour planning tools firmware
+ringlet_layer(tests       FOLDER tests              USES hal whiteboard remote executive sim_hal vision behaviour planning localization tools firmware
   WHY "tests may use every layer; nothing uses tests")
 
 # Folder -> layer, deepest folder first. Sets <out> to the layer holding <rel> (a path relative to

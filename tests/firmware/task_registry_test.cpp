@@ -26,13 +26,13 @@ FirmwareConfig with_row(const std::string& row) {
 TEST(TaskRegistry, ProductionTasksAreRegisteredOnceEach) {
   const TaskRegistry registry = production_tasks();
   for (const char* name : {"sense", "ball_sensor", "goals", "vision", "planner", "arbiter", "fsm", "actuate", "telemetry",
-                           "plan_record", "whiteboard", "pddl", "pddl_record"}) {
+                           "plan_record", "whiteboard", "pddl", "pddl_record", "sense_no_gps", "localization"}) {
     const RegisteredTask* t = registry.find(name);
     ASSERT_NE(t, nullptr) << name;
     EXPECT_EQ(t->declaration->name, name);
     EXPECT_NE(t->declaration->location().find("_task.hpp:"), std::string::npos) << "declared in its own file";
   }
-  EXPECT_EQ(registry.tasks().size(), 13U);
+  EXPECT_EQ(registry.tasks().size(), 15U);
   EXPECT_EQ(registry.find("no_such_task"), nullptr);
 }
 

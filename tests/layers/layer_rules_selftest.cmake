@@ -242,7 +242,7 @@ list(LENGTH forbidden_pairs npairs)
 expect_configure_failure("link: all ${npairs} forbidden pairs at once" "${all_links}" ${all_messages})
 
 set(one_per_layer hal:whiteboard whiteboard:vision remote:vision executive:behaviour sim_hal:vision vision:behaviour
-                  behaviour:planning planning:vision tools:firmware firmware:tests)
+                  behaviour:planning planning:vision localization:whiteboard tools:firmware firmware:tests)
 foreach(layer IN LISTS RINGLET_LAYERS)
   set(planted FALSE)
   foreach(pair IN LISTS one_per_layer)

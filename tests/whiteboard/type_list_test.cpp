@@ -15,7 +15,7 @@ TEST(WbTypeList, NamesAndIdsAreTheSchemaOnes) {
                                        "FsmControl", "ExecutiveTiming", "Print",
                                        "FieldLines",  "HeadPosture",   "BodyState",    "MissionGoals",
                                        "MissionStatus", "RobotDetections", "LaserScan", "Plan", "ArbiterCommand",
-                                       "BridgeHealth", "BoardHealth", "PddlRequest", "PddlReply"};
+                                       "BridgeHealth", "BoardHealth", "PddlRequest", "PddlReply", "Localization"};
   ASSERT_EQ(kTypeCount, names.size());
   for (std::size_t i = 0; i < kTypeCount; ++i) {
     EXPECT_EQ(kTypes[i].name, names[i]);

@@ -83,6 +83,7 @@ class SimBackend final : public sim_hal::SimRobot, private hal::GroundTruth {
   }
   [[nodiscard]] std::uint64_t collisions() const noexcept override { return SimRobot::collisions(); }
   [[nodiscard]] double distance_travelled() const noexcept override { return SimRobot::distance_travelled(); }
+  [[nodiscard]] std::optional<hal::Pose2> robot_pose() const noexcept override { return true_state().pose; }
   void write_picture(std::ostream& out, const hal::RunPicture& run) const override {
     sim_hal::write_world_svg(out, world(), run);
   }

@@ -353,6 +353,55 @@ void read_vision(Section& vision, VisionSettings& v, const std::filesystem::path
   vision.reject_unknown();
 }
 
+void read_field(Section& field, localization::FieldDimensions& d) {
+  d.length = field.number("length", d.length, 0.5, 100.0);
+  d.width = field.number("width", d.width, 0.5, 100.0);
+  d.centre_circle_radius = field.number("centre_circle_radius", d.centre_circle_radius, 0.01, 50.0);
+  d.penalty_area_length = field.number("penalty_area_length", d.penalty_area_length, 0.01, 50.0);
+  d.penalty_area_width = field.number("penalty_area_width", d.penalty_area_width, 0.01, 100.0);
+  d.goal_area_length = field.number("goal_area_length", d.goal_area_length, 0.01, 50.0);
+  d.goal_area_width = field.number("goal_area_width", d.goal_area_width, 0.01, 100.0);
+  d.penalty_mark_distance = field.number("penalty_mark_distance", d.penalty_mark_distance, 0.01, 50.0);
+  d.goal_inner_width = field.number("goal_inner_width", d.goal_inner_width, 0.01, 100.0);
+  d.border = field.number("border", d.border, 0.0, 10.0);
+  // Each check names its key first ("penalty_area_width must ..."): point at that key.
+  if (const std::string why = localization::check(d); !why.empty()) {
+    const std::string key = why.substr(0, why.find(' '));
+    if (const toml::node* n = field.find(key)) field.fail(*n, key, why);
+    field.fail_missing(key, why);
+  }
+  field.reject_unknown();
+}
+
+void read_localization(Section& loc, LocalizationSettings& l) {
+  localization::FilterParams& f = l.filter;
+  f.particles = loc.integer("particles", f.particles, 10, 5000);
+  f.seed = loc.unsigned_integer("seed", f.seed);
+  f.observation.line_sigma = loc.number("line_sigma_m", f.observation.line_sigma, 0.01, 2.0);
+  f.observation.circle_sigma = loc.number("circle_sigma_m", f.observation.circle_sigma, 0.01, 2.0);
+  f.lost_quality = loc.number("lost_quality", f.lost_quality, 0.0, 1.0);
+  f.max_reset_share = loc.number("max_reset_share", f.max_reset_share, 0.0, 0.9);
+  if (const toml::node* n = loc.find("start")) {
+    const auto* a = n->as_array();
+    bool numbers = a != nullptr && a->size() == 3;
+    for (std::size_t i = 0; numbers && i < 3; ++i) numbers = a->get(i)->is_number();
+    if (!numbers) {
+      loc.fail(*n, "start", "must be [x, y, heading_deg] (m, m, degrees from +y towards +x)");
+    }
+    const auto num = [&](std::size_t i) {
+      const toml::node& e = *a->get(i);
+      return e.is_integer() ? static_cast<double>(e.as_integer()->get()) : e.as_floating_point()->get();
+    };
+    l.start = hal::Pose2{num(0), num(1), hal::wrap_angle(hal::deg_to_rad(num(2)))};
+  }
+  l.start_sigma_xy = loc.number("start_sigma_m", l.start_sigma_xy, 0.0, 10.0);
+  l.start_sigma_theta = hal::deg_to_rad(loc.number("start_sigma_deg", hal::rad_to_deg(l.start_sigma_theta), 0.0, 180.0));
+  const std::string side = loc.text("side", "none", {"west", "east", "none"});
+  l.side = side == "west" ? -1.0 : (side == "east" ? 1.0 : 0.0);
+  if (const std::string why = localization::check(f); !why.empty()) loc.fail_missing("particles", why);
+  loc.reject_unknown();
+}
+
 // Type names the schema knows ("FsmStatus", ...), for the [remote] per-type keys.
 bool is_message_type(std::string_view name) {
   for (const auto& t : wb::kTypes) {
@@ -445,6 +494,10 @@ FirmwareConfig parse_config(std::string_view text, const std::string& source, co
   read_vision(vision, cfg.vision, base_dir);
   Section remote = in("remote");
   read_remote(remote, cfg.remote, base_dir);
+  Section field = in("field");
+  read_field(field, cfg.localization.field);
+  Section loc = in("localization");
+  read_localization(loc, cfg.localization);
   Section telemetry = in("telemetry");
   cfg.trajectory_every = telemetry.integer("trajectory_every", cfg.trajectory_every, 1, 100000);
   telemetry.reject_unknown();

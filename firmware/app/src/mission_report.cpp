@@ -120,7 +120,8 @@ MissionSummary summarize(const FirmwareStack& stack, const RunOutcome& outcome, 
   s.fsm_status_seen = stack.fsm_status_seen();
   if (const hal::GroundTruth* truth = stack.truth()) {
     s.truth = TruthSummary{truth->distance_travelled(), truth->collisions(),
-                           stack.truth_score() != nullptr ? stack.truth_score()->head_tracking() : HeadTracking{}};
+                           stack.truth_score() != nullptr ? stack.truth_score()->head_tracking() : HeadTracking{},
+                           stack.truth_score() != nullptr ? stack.truth_score()->localization() : LocalizationScore{}};
   }
   if (const VisionStats* v = telemetry.vision()) s.vision = *v;
   s.run_hash = run_hash(stack, s);
@@ -212,6 +213,16 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
   if (s.truth) {
     std::snprintf(line, sizeof line, "  ground truth: distance %.2f m, collisions %llu\n", s.truth->distance_m,
                   static_cast<unsigned long long>(s.truth->collisions));
+    out << line;
+  }
+  if (s.truth && s.truth->localization.frames > 0) {
+    const LocalizationScore& l = s.truth->localization;
+    std::snprintf(line, sizeof line,
+                  "  localization vs truth: position mean %.3f m, p95 %.3f m, max %.3f m; heading mean %.2f deg, p95 %.1f "
+                  "deg; Pose valid in %.1f %% of %llu frames\n",
+                  l.mean_position(), l.p95_position(), l.max_position, l.mean_heading_deg(), l.p95_heading_deg(),
+                  100.0 * static_cast<double>(l.valid_frames) / static_cast<double>(l.frames),
+                  static_cast<unsigned long long>(l.frames));
     out << line;
   }
   if (s.truth && s.truth->head.frames > 0) {
@@ -307,6 +318,15 @@ nlohmann::json summary_json(const MissionSummary& s) {
           {"ground_truth", s.truth ? nlohmann::json{{"distance_m", s.truth->distance_m},
                                                     {"collisions", s.truth->collisions}}
                                    : nlohmann::json(nullptr)},
+          {"localization", s.truth && s.truth->localization.frames > 0
+                               ? nlohmann::json{{"frames", s.truth->localization.frames},
+                                                {"valid_frames", s.truth->localization.valid_frames},
+                                                {"position_mean_m", s.truth->localization.mean_position()},
+                                                {"position_p95_m", s.truth->localization.p95_position()},
+                                                {"position_max_m", s.truth->localization.max_position},
+                                                {"heading_mean_deg", s.truth->localization.mean_heading_deg()},
+                                                {"heading_p95_deg", s.truth->localization.p95_heading_deg()}}
+                               : nlohmann::json(nullptr)},
           {"head_tracking", s.truth ? nlohmann::json{{"frames", s.truth->head.frames},
                                                      {"on_target_share", s.truth->head.on_target_share()},
                                                      {"mean_error_deg", hal::rad_to_deg(s.truth->head.mean_error())},

@@ -5,6 +5,7 @@
 #include "ringlet/firmware/tasks/ball_sensor_task.hpp"
 #include "ringlet/firmware/tasks/fsm_task.hpp"
 #include "ringlet/firmware/tasks/goals_task.hpp"
+#include "ringlet/firmware/tasks/localization_task.hpp"
 #include "ringlet/firmware/tasks/plan_record_task.hpp"
 #include "ringlet/firmware/tasks/pddl_record_task.hpp"
 #include "ringlet/firmware/tasks/pddl_task.hpp"
@@ -26,9 +27,11 @@ const RegisteredTask* TaskRegistry::find(std::string_view name) const noexcept {
 TaskRegistry production_tasks() {
   TaskRegistry registry;
   registry.add<SenseTask>();
+  registry.add<SenseNoGpsTask>();
   registry.add<BallSensorTask>();
   registry.add<GoalsTask>();
   registry.add<VisionTask>();
+  registry.add<LocalizationTask>();
   registry.add<PlannerTask>();
   registry.add<ArbiterTask>();
   registry.add<FsmTask>();

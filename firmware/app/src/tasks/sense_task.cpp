@@ -52,10 +52,15 @@ std::unique_ptr<executive::Task> SenseTask::make(TaskServices& services) {
   return std::make_unique<SenseTask>(services.robot.sensors(), services.board, services.robot.board_health());
 }
 
+std::unique_ptr<executive::Task> SenseNoGpsTask::make(TaskServices& services) {
+  return std::make_unique<SenseNoGpsTask>(services.robot.sensors(), services.board, services.robot.board_health(),
+                                          false);
+}
+
 void SenseTask::run(const executive::TaskContext& ctx) noexcept {
   const bool ok = sensors_.read(frame_);
   if (!ok && sensors_.exhausted()) ctx.request_stop();  // a replayed log has ended
-  board_.post(wb::Pose{frame_.pose.pose.x, frame_.pose.pose.y, frame_.pose.pose.theta, ok && frame_.pose.valid});
+  if (posts_gps_) board_.post(wb::Pose{frame_.pose.pose.x, frame_.pose.pose.y, frame_.pose.pose.theta, ok && frame_.pose.valid});
   board_.post(summarize(frame_.laser));
   to_message(frame_.laser, frame_.stamp.count(), scan_);
   board_.post(scan_);

@@ -54,6 +54,8 @@ class GroundTruth {
   [[nodiscard]] virtual std::optional<RobotPoint> ball_in_robot_frame() const noexcept = 0;
   /// Contact events between the robot and anything solid so far.
   [[nodiscard]] virtual std::uint64_t collisions() const noexcept = 0;
+  /// Where the robot really is (none: this backend cannot say).
+  [[nodiscard]] virtual std::optional<Pose2> robot_pose() const noexcept { return std::nullopt; }
   /// Path length really driven so far (m).
   [[nodiscard]] virtual double distance_travelled() const noexcept = 0;
   /// The world as an SVG picture with the run drawn over it.

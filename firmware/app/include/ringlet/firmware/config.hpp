@@ -21,6 +21,8 @@
 #include "ringlet/firmware/lossy_link.hpp"
 #include "ringlet/hal/camera.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
+#include "ringlet/localization/field_model.hpp"
+#include "ringlet/localization/particle_filter.hpp"
 #include "ringlet/planning/cost_model.hpp"
 #include "ringlet/planning/knn_regressor.hpp"
 #include "ringlet/planning/learned_cost_model.hpp"
@@ -141,6 +143,17 @@ struct VisionSettings {
   bool robots = true;                 // the robot stage runs (RobotDetections posted)
 };
 
+/// Self-localization ([field], [localization]; the localization task, localization/README.md):
+/// the known field, the filter's parameters and what the robot knows when it starts.
+struct LocalizationSettings {
+  localization::FieldDimensions field{};
+  localization::FilterParams filter{};
+  std::optional<hal::Pose2> start;  // a known start pose (a kick-off position); none: unknown
+  double start_sigma_xy = 0.1;      // m, how well it is known
+  double start_sigma_theta = 0.05;  // rad
+  double side = 0.0;                // the side prior: -1 west half (x < 0), +1 east, 0 none
+};
+
 /// Remote monitoring ([remote]): the whiteboard published over Cyclone DDS by the bridge
 /// (remote/README.md). Off by default.
 struct RemoteSettings {
@@ -196,6 +209,7 @@ struct FirmwareConfig {
   CameraSettings camera{};
   VisionSettings vision{};
   RemoteSettings remote{};
+  LocalizationSettings localization{};
   int trajectory_every = 10;        // telemetry.trajectory_every: frames between samples
 
   /// The row of the task table named `name`, or null when that task does not run.

@@ -29,6 +29,7 @@ struct TruthSummary {
   double distance_m = 0;        // really driven
   std::uint64_t collisions = 0; // contact events
   HeadTracking head{};          // measured head yaw against the true ball
+  LocalizationScore localization{};  // the localization against the true pose (not in the run hash)
 };
 
 /// What the bridge published ([remote] enabled): host-dependent counts, never in the run hash.

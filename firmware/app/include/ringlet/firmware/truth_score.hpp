@@ -3,6 +3,7 @@
 // head follows the true ball. It watches each frame from outside the task table
 // (executive::FrameObserver) and reads the whiteboard and hal::GroundTruth only; nothing the
 // controller does depends on it.
+#include <array>
 #include <cstdint>
 
 #include "ringlet/executive/executive.hpp"
@@ -30,16 +31,40 @@ struct HeadTracking {
   }
 };
 
+/// How far the localization's pose (Localization on the whiteboard) is from the true pose, every
+/// frame once it is posted: mean and 95th percentile (from fixed histograms: 5 mm and 0.1° bins,
+/// nothing allocated), position and heading, over all frames and over the frames where Pose was
+/// valid (the controller drove on it).
+struct LocalizationScore {
+  static constexpr double kPositionBin = 0.005;  // m
+  static constexpr double kHeadingBin = 0.1;     // deg
+  std::array<std::uint32_t, 2000> position{};    // the last bin takes everything beyond 10 m
+  std::array<std::uint32_t, 1801> heading{};
+  std::uint64_t frames = 0;
+  std::uint64_t valid_frames = 0;  // Pose.valid
+  double sum_position = 0.0, sum_heading_deg = 0.0, max_position = 0.0;
+  double sum_valid_position = 0.0;
+
+  [[nodiscard]] double mean_position() const noexcept { return frames == 0 ? 0.0 : sum_position / static_cast<double>(frames); }
+  [[nodiscard]] double mean_heading_deg() const noexcept {
+    return frames == 0 ? 0.0 : sum_heading_deg / static_cast<double>(frames);
+  }
+  [[nodiscard]] double p95_position() const noexcept;
+  [[nodiscard]] double p95_heading_deg() const noexcept;
+};
+
 class TruthScore final : public executive::FrameObserver {
  public:
   TruthScore(const hal::GroundTruth& truth, const wb::Whiteboard& board) noexcept : truth_(truth), board_(board) {}
   void frame_done(std::uint64_t frame, hal::Nanos frame_start) noexcept override;
   [[nodiscard]] const HeadTracking& head_tracking() const noexcept { return head_; }
+  [[nodiscard]] const LocalizationScore& localization() const noexcept { return loc_; }
 
  private:
   const hal::GroundTruth& truth_;
   const wb::Whiteboard& board_;
   HeadTracking head_{};
+  LocalizationScore loc_{};
 };
 
 }  // namespace ringlet::firmware
