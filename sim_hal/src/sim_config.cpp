@@ -35,6 +35,9 @@ void validate(const SimConfig& config) {
   require_positive("robot_radius", config.robot_radius);
   require_non_negative("gps_sigma_xy", config.gps_sigma_xy);
   require_non_negative("gps_sigma_theta", config.gps_sigma_theta);
+  require_positive("odometry.scale", config.odometry.scale);
+  require_non_negative("odometry.slip_sigma", config.odometry.slip_sigma);
+  require_non_negative("odometry.curvature_sigma", config.odometry.curvature_sigma);
   constexpr int kMaxBeams = static_cast<int>(hal::LaserScan::kMaxBeams);
   if (config.laser_beams < 1 || config.laser_beams > kMaxBeams) {
     reject("laser_beams", "in 1.." + std::to_string(kMaxBeams), std::to_string(config.laser_beams));

@@ -33,18 +33,26 @@ double approach(double current, double target, double max_change) noexcept {
 
 /// The sway's starting phase in [0, 2π), from the seed by SplitMix64's finaliser: deterministic
 /// on every host and independent of the noise RNG's stream.
-double sway_phase(std::uint64_t seed) noexcept {
+std::uint64_t split_mix(std::uint64_t seed) noexcept {
   std::uint64_t z = seed + 0x9E3779B97F4A7C15ULL;
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  z ^= z >> 31;
+  return z ^ (z >> 31);
+}
+
+double sway_phase(std::uint64_t seed) noexcept {
+  const std::uint64_t z = split_mix(seed);
   return 2.0 * std::numbers::pi * static_cast<double>(z >> 11) * 0x1.0p-53;
 }
 
 }  // namespace
 
 SimRobot::SimRobot(World world, const SimConfig& config)
-    : world_(std::move(world)), config_(config), rng_(config.seed), sway_phase_(sway_phase(config.seed)) {
+    : world_(std::move(world)),
+      config_(config),
+      rng_(config.seed),
+      odometry_rng_(split_mix(split_mix(config.seed))),
+      sway_phase_(sway_phase(config.seed)) {
   validate(config_);
   rays_.reserve(world_);
   body_ = {config_.body.pitch, config_.body.roll};
@@ -112,7 +120,12 @@ void SimRobot::step() noexcept {
   } else {
     const double travelled = next.velocity * dt;
     distance_ += std::fabs(travelled);
-    odometry_distance_ += travelled;
+    // The wheels' count: scaled, and slipping as a random walk of variance slip² per metre.
+    const SimOdometryError& e = config_.odometry;
+    const double slip = e.slip_sigma > 0.0
+                            ? e.slip_sigma * std::sqrt(std::fabs(travelled)) * odometry_normal_(odometry_rng_)
+                            : 0.0;
+    odometry_distance_ += travelled * e.scale + slip;
     state_ = next;
     if (in_contact_ && !disc_collides(world_, Vec2{state_.pose.x, state_.pose.y},
                                       config_.robot_radius + contact_release_distance(config_))) {
@@ -156,8 +169,11 @@ void SimRobot::measure(hal::SensorFrame& out) noexcept {
 
   out.odometry.stamp = time_;
   out.odometry.distance = odometry_distance_;
-  out.odometry.velocity = state_.velocity;
-  out.odometry.curvature = state_.curvature;
+  const SimOdometryError& e = config_.odometry;
+  out.odometry.velocity = state_.velocity * e.scale;
+  out.odometry.curvature = state_.curvature;  // exact unless configured (and −0 stays −0)
+  if (e.curvature_bias != 0.0) out.odometry.curvature += e.curvature_bias;
+  if (e.curvature_sigma > 0.0) out.odometry.curvature += e.curvature_sigma * odometry_normal_(odometry_rng_);
 
   out.head = head_;
 

@@ -41,6 +41,11 @@ std::shared_ptr<const BackendSettings> read_sim(Section& section, const std::fil
   s.robot_radius = section.number("robot_radius", s.robot_radius, 0.01, 5.0);
   s.gps_sigma_xy = section.number("gps_sigma_xy", s.gps_sigma_xy, 0.0, 10.0);
   s.gps_sigma_theta = hal::deg_to_rad(section.number("gps_sigma_theta_deg", hal::rad_to_deg(s.gps_sigma_theta), 0.0, 90.0));
+  // Wheel odometry's errors (SimOdometryError): exact unless configured.
+  s.odometry.scale = section.number("odometry_scale", s.odometry.scale, 0.5, 1.5);
+  s.odometry.curvature_bias = section.number("odometry_curvature_bias", s.odometry.curvature_bias, -1.0, 1.0);
+  s.odometry.slip_sigma = section.number("odometry_slip_sigma", s.odometry.slip_sigma, 0.0, 1.0);
+  s.odometry.curvature_sigma = section.number("odometry_curvature_sigma", s.odometry.curvature_sigma, 0.0, 1.0);
   s.laser_beams = section.integer("laser_beams", s.laser_beams, 1, static_cast<int>(hal::LaserScan::kMaxBeams));
   s.laser_fov = hal::deg_to_rad(section.number("laser_fov_deg", hal::rad_to_deg(s.laser_fov), 0.1, 360.0));
   s.laser_range = section.number("laser_range", s.laser_range, 0.1, 100.0);

@@ -32,6 +32,18 @@ struct SimBodyTilt {
   double sway_period = 1.0;  // s, one left-right cycle
 };
 
+/// Wheel odometry's errors, as a real base has them: a scale error (wheels not quite their nominal
+/// size), a curvature bias (steering not quite centred), slip (a random walk: the distance's error
+/// has variance slip_sigma² per metre driven) and noise on each measured curvature. All off by
+/// default: the odometry is then exact. Drawn from their own stream, so turning them on changes
+/// nothing but the odometry.
+struct SimOdometryError {
+  double scale = 1.0;            // measured distance / true distance
+  double curvature_bias = 0.0;   // 1/m, added to every measured curvature
+  double slip_sigma = 0.0;       // m/√m
+  double curvature_sigma = 0.0;  // 1/m, per reading
+};
+
 struct SimConfig {
   hal::Nanos period{10'000'000};  // one executive period per read()
   std::uint64_t seed = 1;
@@ -39,6 +51,7 @@ struct SimConfig {
   double robot_radius = 0.25;     // m, the footprint used for collisions
   double gps_sigma_xy = 0.0;      // m, Gaussian noise on the GPS pose (eq. 19)
   double gps_sigma_theta = 0.0;   // rad
+  SimOdometryError odometry{};    // exact by default
   int laser_beams = 181;          // N, at most hal::LaserScan::kMaxBeams
   double laser_fov = 3.14159265358979323846;  // rad, centred straight ahead
   double laser_range = 8.0;       // Delta, m
@@ -106,6 +119,8 @@ class SimRobot : public hal::Robot, private hal::Sensors, private hal::Actuators
   SimConfig config_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> unit_normal_{0.0, 1.0};
+  std::mt19937_64 odometry_rng_;  // the odometry's errors: a stream of their own
+  std::normal_distribution<double> odometry_normal_{0.0, 1.0};
   CarState state_{};
   hal::HeadJoints head_{};
   hal::BodyTilt body_{};
@@ -117,7 +132,7 @@ class SimRobot : public hal::Robot, private hal::Sensors, private hal::Actuators
   std::uint64_t steps_ = 0;
   std::uint64_t collisions_ = 0;
   double distance_ = 0.0;           // path length driven, |v| dt summed: battery drain, statistics
-  double odometry_distance_ = 0.0;  // v dt summed, signed like hal::WheelOdometry::distance
+  double odometry_distance_ = 0.0;  // v dt summed (with the odometry's errors), signed like hal::WheelOdometry::distance
   std::unique_ptr<SimCamera> camera_;  // last: its thread starts once everything else exists
 };
 
