@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cmath>
 #include <fstream>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -30,6 +31,9 @@ constexpr const char* kStartFill = "#7b3fb5";
 constexpr const char* kCollisionStroke = "#d62020";
 constexpr const char* kPlaceColour = "#5a5a5a";
 constexpr const char* kReportedFill = "#f2c200";
+constexpr const char* kTruthStroke = "#111111";
+constexpr const char* kParticleStroke = "#e0218a";
+constexpr const char* kObservedStroke = "#00c8ff";
 
 /// ~900 px across the world. A World that did not come from the parser may have empty bounds;
 /// it still gets a (meaningless but finite) picture rather than NaN coordinates.
@@ -45,7 +49,8 @@ class SvgPicture {
 
   std::string draw() {
     const double width = kWorldWidthPx + 2.0 * kMarginPx;
-    const double height = kMarginPx + world_px_height() + kFooterPx + (has_plan_row() ? 24.0 : 0.0);
+    const double height = kMarginPx + world_px_height() + kFooterPx + (has_plan_row() ? 24.0 : 0.0) +
+                          (has_localization_row() ? 24.0 : 0.0);
     text_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"";
     attr("width", width);
     attr("height", height);
@@ -64,7 +69,10 @@ class SvgPicture {
     plan_map();
     places();
     plans();
+    particles();
+    truth();
     trajectory();
+    observed();
     reported();
     goals();
     start_pose();
@@ -337,6 +345,74 @@ class SvgPicture {
     text_ += "\" stroke-width=\"2\" stroke-linejoin=\"round\" stroke-linecap=\"round\"/>\n";
   }
 
+  [[nodiscard]] bool has_localization_row() const noexcept {
+    return !overlay_.localization.truth.empty() || !overlay_.localization.snapshots.empty();
+  }
+
+  // The simulator's true path, dashed under the estimated one.
+  void truth() {
+    const std::span<const hal::Pose2> t = overlay_.localization.truth;
+    if (t.empty()) return;
+    text_ += "<polyline class=\"truth\" points=\"";
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (i > 0) text_ += ' ';
+      point(px(t[i].x), py(t[i].y));
+    }
+    text_ += "\" fill=\"none\" stroke=\"";
+    text_ += kTruthStroke;
+    text_ += "\" stroke-width=\"1.6\" stroke-dasharray=\"5 3\" stroke-linejoin=\"round\"/>\n";
+  }
+
+  // Each snapshot's particles: one path of short strokes from each particle along its heading.
+  void particles() {
+    const hal::LocalizationPicture& l = overlay_.localization;
+    std::size_t begin = 0;
+    for (const hal::LocalizationSnapshot& snap : l.snapshots) {
+      const std::size_t end = std::min<std::size_t>(snap.particles_end, l.particles.size());
+      if (end > begin) {
+        text_ += "<path class=\"particles\" d=\"";
+        for (std::size_t k = begin; k < end; ++k) {
+          const hal::Pose2& p = l.particles[k];
+          text_ += k > begin ? " M" : "M";
+          point(px(p.x), py(p.y));
+          text_ += " l";
+          point(0.12 * scale_ * std::sin(p.theta), -0.12 * scale_ * std::cos(p.theta));
+        }
+        text_ += "\" fill=\"none\" stroke=\"";
+        text_ += kParticleStroke;
+        text_ += "\" stroke-width=\"1.4\" stroke-opacity=\"0.55\" stroke-linecap=\"round\"/>\n";
+      }
+      begin = end;
+    }
+  }
+
+  // What each snapshot's correction weighed: the observed segments placed with the estimate, the
+  // estimate itself and when (and why) the snapshot was taken.
+  void observed() {
+    const hal::LocalizationPicture& l = overlay_.localization;
+    const std::string seg_style = std::string("stroke=\"") + kObservedStroke + "\" stroke-width=\"3\" stroke-linecap=\"round\"";
+    const std::string arrow_style = std::string("fill=\"#ffffff\" stroke=\"") + kParticleStroke + "\" stroke-width=\"1.5\"";
+    std::size_t begin = 0;
+    for (const hal::LocalizationSnapshot& snap : l.snapshots) {
+      const std::size_t end = std::min<std::size_t>(snap.segments_end, l.segments.size());
+      for (std::size_t k = begin; k < end; ++k) {
+        const hal::WorldSegment& g = l.segments[k];
+        line("observed", px(g.a.x), py(g.a.y), px(g.b.x), py(g.b.y), seg_style);
+      }
+      begin = end;
+      arrow("snapshot", snap.estimate, 0.3, 0.2, arrow_style);
+      std::string text;
+      detail::append_fixed(text, snap.time_s, 1);
+      text += " s";
+      if (snap.reason != "every 5 s" && !snap.reason.empty()) {
+        text += ' ';
+        text += snap.reason;
+      }
+      label(px(snap.estimate.x) + 9.0, py(snap.estimate.y) + 16.0, "start",
+            "class=\"snapshot-time\" font-size=\"12\" font-weight=\"bold\" fill=\"#7a0f4c\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\"", text);
+    }
+  }
+
   void goals() {
     const double r = std::max(8.0, kGoalRadiusM * scale_);
     for (std::size_t i = 0; i < overlay_.goals.size(); ++i) {
@@ -379,8 +455,8 @@ class SvgPicture {
     const double step = 140.0;
     line("legend", x - 8.0, y, x + 8.0, y,
          std::string("stroke=\"") + kTrajectoryStroke + "\" stroke-width=\"2\"");
-    label(x + 14.0, y + 4.5, "start", "", "trajectory");
-    x += step;
+    label(x + 14.0, y + 4.5, "start", "", has_localization_row() ? "estimated trajectory" : "trajectory");
+    x += has_localization_row() ? 1.3 * step : step;
     text_ += "<polygon class=\"legend\" points=\"";
     point(x, y - 7.0);
     text_ += ' ';
@@ -403,6 +479,21 @@ class SvgPicture {
     x += step;
     cross_mark("legend", x, y, 6.0);
     label(x + 14.0, y + 4.5, "start", "", "collision");
+    if (has_localization_row()) {  // a row for the localization (the last one)
+      const double y3 = y + (has_plan_row() ? 48.0 : 24.0);
+      double x3 = left + 8.0;
+      line("legend", x3 - 8.0, y3, x3 + 8.0, y3,
+           std::string("stroke=\"") + kTruthStroke + "\" stroke-width=\"1.6\" stroke-dasharray=\"5 3\"");
+      label(x3 + 14.0, y3 + 4.5, "start", "", "true trajectory (simulator)");
+      x3 += 1.6 * step;
+      line("legend", x3 - 6.0, y3 + 3.0, x3 + 6.0, y3 - 3.0,
+           std::string("stroke=\"") + kParticleStroke + "\" stroke-width=\"1.4\" stroke-linecap=\"round\"");
+      label(x3 + 14.0, y3 + 4.5, "start", "", "particles at a snapshot (time, why)");
+      x3 += 1.9 * step;
+      line("legend", x3 - 8.0, y3, x3 + 8.0, y3,
+           std::string("stroke=\"") + kObservedStroke + "\" stroke-width=\"3\" stroke-linecap=\"round\"");
+      label(x3 + 14.0, y3 + 4.5, "start", "", "lines seen then, placed by the estimate");
+    }
     if (has_plan_row()) {  // a second row: the planner's picture
       const double y2 = y + 24.0;
       double x2 = left + 8.0;

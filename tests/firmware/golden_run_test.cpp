@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
+#include <functional>
 #include <cstdio>
 #include <sstream>
 
@@ -28,12 +30,15 @@ struct Golden {
   std::uint64_t run;
 };
 
-MissionSummary run(const std::string& text, const char* name) {
+/// `inspect`: called with the stack after the run (what the summary does not carry).
+MissionSummary run(const std::string& text, const char* name,
+                   const std::function<void(const FirmwareStack&)>& inspect = nullptr) {
   const auto cfg = test::parse_as_shipped(text);
   FirmwareStack stack(cfg);
   std::atomic<bool> interrupt{false};
   std::ostringstream log;
   const auto outcome = run_mission(stack, cfg.mission.timeout_s, interrupt, log);
+  if (inspect) inspect(stack);
   auto s = summarize(stack, outcome, stack.executive().failsafe_triggered() || outcome.watchdog_fired);
   std::printf("%s: trajectory hash %016llx  run hash %016llx  (%.2f s simulated, %.2f s host)\n", name, static_cast<unsigned long long>(s.trajectory_hash),
               static_cast<unsigned long long>(s.run_hash), s.mission_seconds, s.wall_seconds);
@@ -126,7 +131,22 @@ TEST(GoldenRun, CourtyardMission) {
 
 TEST(GoldenRun, SplFieldWithCameraAndVision) {
   // 4 s: the camera runs are the longest tests under ASan and qemu (FirmwareVision runs 8 s).
-  const auto s = run(spl_field(4.0), kSplField.name);
+  // The run's picture records the localization beside it (an observer: the hashes stay): the true
+  // path at the estimated path's cadence and the filter's first snapshot, with its particles and
+  // the lines it weighed.
+  const auto s = run(spl_field(4.0), kSplField.name, [](const FirmwareStack& stack) {
+    const LocalizationTrack* loc = stack.telemetry().localization();
+    ASSERT_NE(loc, nullptr);
+    EXPECT_GE(loc->truth.size(), stack.telemetry().trajectory().size() - 1);
+    ASSERT_GE(loc->snapshots.size(), 1U);
+    EXPECT_EQ(loc->snapshots[0].reason, "start");
+    EXPECT_EQ(loc->snapshots[0].particles_end, static_cast<std::uint32_t>(stack.config().localization.filter.particles));
+    EXPECT_GE(loc->snapshots[0].segments_end, 1U) << "the first correction had lines to weigh";
+    EXPECT_EQ(loc->dropped_snapshots, 0U);
+    const hal::Pose2 truth = stack.truth()->robot_pose().value();
+    const hal::Pose2& last = loc->truth.back();
+    EXPECT_LT(std::hypot(last.x - truth.x, last.y - truth.y), 0.2) << "the true path ends where the robot is";
+  });
   ASSERT_TRUE(s.vision.has_value());
   EXPECT_GT(s.vision->frames, 125U);
   expect_golden(s, kSplField);

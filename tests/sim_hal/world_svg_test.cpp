@@ -162,6 +162,48 @@ TEST(SimSvg, DrawsATaskPlannersPlacesPlansAndReportedObstacles) {
   EXPECT_LT(std::stod(attribute(plain, "height")), std::stod(attribute(svg, "height")));
 }
 
+TEST(SimSvg, DrawsTrueAndEstimatedTrajectoriesParticlesAndTheLinesThatDroveACorrection) {
+  const World world = picture_world();
+  const std::vector<hal::Pose2> estimated = {{2.0, 2.0, 0.0}, {2.0, 4.0, 0.0}, {2.1, 6.0, 0.0}};
+  const std::vector<hal::Pose2> truth = {{2.0, 2.0, 0.0}, {2.05, 4.0, 0.0}, {2.0, 6.0, 0.0}, {2.0, 7.0, 0.0}};
+  // Two snapshots: three particles then two; one segment then none.
+  const std::vector<hal::Pose2> particles = {{2.0, 2.0, 0.0}, {2.1, 2.0, 0.5}, {1.9, 2.1, 0.0}, {2.0, 6.0, 1.57}, {2.0, 6.1, 1.57}};
+  const std::vector<hal::WorldSegment> segments = {{{1.0, 3.0}, {3.0, 3.0}}};
+  const std::vector<hal::LocalizationSnapshot> snapshots = {{0.5, {2.0, 2.0, 0.0}, 3, 1, "start"},
+                                                            {12.34, {2.0, 6.0, 0.0}, 5, 1, "relocalized"}};
+  hal::RunPicture overlay = with_goals();
+  overlay.trajectory = estimated;
+  overlay.localization.truth = truth;
+  overlay.localization.snapshots = snapshots;
+  overlay.localization.particles = particles;
+  overlay.localization.segments = segments;
+  const std::string svg = render(world, overlay);
+  EXPECT_EQ(count(svg, "class=\"truth\""), 1U);
+  EXPECT_EQ(count(svg, "class=\"trajectory\""), 1U);
+  EXPECT_NE(attribute(svg, "stroke", svg.find("class=\"truth\"")), attribute(svg, "stroke", svg.find("class=\"trajectory\"")))
+      << "the true and the estimated trajectories in different colours";
+  // The true path's four points, y up: (2, 7) is 3 m above (2, 4).
+  EXPECT_EQ(count(attribute(svg, "points", svg.find("class=\"truth\"")), ","), 4U);
+  EXPECT_EQ(count(svg, "class=\"particles\""), 2U);
+  const std::string first_cloud = attribute(svg, "d", svg.find("class=\"particles\""));
+  EXPECT_EQ(count(first_cloud, "M"), 3U) << "a stroke per particle of the first snapshot";
+  EXPECT_EQ(count(svg, "<line class=\"observed\""), 1U);
+  EXPECT_EQ(count(svg, "class=\"snapshot\""), 2U);
+  EXPECT_NE(svg.find(">0.5 s start</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">12.3 s relocalized</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">estimated trajectory</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">true trajectory (simulator)</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">particles at a snapshot (time, why)</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">lines seen then, placed by the estimate</text>"), std::string::npos);
+  hal::RunPicture plain = with_goals();
+  plain.trajectory = estimated;
+  const std::string without = render(world, plain);
+  EXPECT_EQ(without.find("class=\"truth\""), std::string::npos);
+  EXPECT_EQ(without.find("true trajectory"), std::string::npos) << "no localization, no localization row";
+  EXPECT_NE(without.find(">trajectory</text>"), std::string::npos);
+  EXPECT_LT(std::stod(attribute(without, "height")), std::stod(attribute(svg, "height")));
+}
+
 TEST(SimSvg, DrawsPaintedRingsAsCirclesOnGrass) {
   World world = test::box_world(10.0, 10.0, {1.0, 1.0, 0.0});
   world.rings.push_back(Ring{{5.0, 5.0}, 0.75, 0.05});

@@ -345,6 +345,7 @@ bool write_picture(std::ostream& out, const FirmwareStack& stack, const MissionS
                 static_cast<unsigned long long>(s.collisions), seed_text(s).c_str());
   hal::RunPicture run{stack.telemetry().trajectory(), stack.telemetry().collision_points(), goals, s.goals_reached, caption};
   run.plans = stack.telemetry().plan_picture();
+  run.localization = stack.telemetry().localization_picture();
   truth->write_picture(out, run);
   return true;
 }

@@ -144,7 +144,7 @@ FirmwareStack::FirmwareStack(const FirmwareConfig& config, std::unique_ptr<hal::
                                                       robot.actuators(), &events_);
   executive_view_ = executive_.get();
   if (const hal::GroundTruth* truth = robot_->ground_truth()) {
-    truth_score_.emplace(*truth, board_);
+    truth_score_.emplace(*truth, board_, &telemetry_, config_.trajectory_every);
     executive_->set_observer(&*truth_score_);
   }
   if (remote_) {

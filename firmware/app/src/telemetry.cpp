@@ -10,7 +10,8 @@ namespace ringlet::firmware {
 Telemetry::Telemetry(std::size_t trajectory_capacity, std::size_t collision_capacity) {
   // The configuration refuses runs that need more; the cap here keeps a stack built from any
   // other config (a test, a tool) from reserving without limit.
-  trajectory_.reserve(std::min<std::size_t>(trajectory_capacity, kMaxTrajectorySamples));
+  trajectory_capacity_ = std::min<std::size_t>(trajectory_capacity, kMaxTrajectorySamples);
+  trajectory_.reserve(trajectory_capacity_);
   collision_points_.reserve(collision_capacity);
 }
 
@@ -38,6 +39,48 @@ void Telemetry::record_progress(std::size_t goals_reached, std::size_t goal_coun
   while (goals_stamped_ < goals_reached && goals_stamped_ < goal_frames_.size()) goal_frames_[goals_stamped_++] = frame;
   goals_reached_ = goals_reached;
   goal_count_ = goal_count;
+}
+
+LocalizationTrack& Telemetry::enable_localization(std::size_t snapshots, std::size_t particles, std::size_t segments) {
+  localization_enabled_ = true;
+  localization_.truth.reserve(trajectory_capacity_);
+  localization_.snapshots.reserve(snapshots);
+  localization_.particles.reserve(snapshots * particles);
+  localization_.segments.reserve(snapshots * segments);
+  return localization_;
+}
+
+void Telemetry::record_true_pose(const hal::Pose2& pose) noexcept {
+  if (localization_.truth.size() < localization_.truth.capacity()) {
+    localization_.truth.push_back(pose);
+  } else {
+    ++localization_.dropped_truth;
+  }
+}
+
+bool Telemetry::snapshot_fits(std::size_t particles, std::size_t segments) const noexcept {
+  const LocalizationTrack& l = localization_;
+  return l.snapshots.size() < l.snapshots.capacity() && l.particles.size() + particles <= l.particles.capacity() &&
+         l.segments.size() + segments <= l.segments.capacity();
+}
+
+void Telemetry::record_snapshot(double time_s, const hal::Pose2& estimate, std::string_view reason,
+                                std::span<const hal::Pose2> particles,
+                                std::span<const hal::WorldSegment> segments) noexcept {
+  if (!snapshot_fits(particles.size(), segments.size())) {
+    ++localization_.dropped_snapshots;
+    return;
+  }
+  LocalizationTrack& l = localization_;
+  l.particles.insert(l.particles.end(), particles.begin(), particles.end());
+  l.segments.insert(l.segments.end(), segments.begin(), segments.end());
+  l.snapshots.push_back({time_s, estimate, static_cast<std::uint32_t>(l.particles.size()),
+                         static_cast<std::uint32_t>(l.segments.size()), reason});
+}
+
+hal::LocalizationPicture Telemetry::localization_picture() const noexcept {
+  if (!localization_enabled_) return {};
+  return {localization_.truth, localization_.snapshots, localization_.particles, localization_.segments};
 }
 
 VisionStats& Telemetry::enable_vision() noexcept {

@@ -23,9 +23,12 @@ double percentile95(const std::array<std::uint32_t, N>& bins, std::uint64_t tota
 double LocalizationScore::p95_position() const noexcept { return percentile95(position, frames, kPositionBin); }
 double LocalizationScore::p95_heading_deg() const noexcept { return percentile95(heading, frames, kHeadingBin); }
 
-void TruthScore::frame_done(std::uint64_t /*frame*/, hal::Nanos frame_start) noexcept {
+void TruthScore::frame_done(std::uint64_t frame, hal::Nanos frame_start) noexcept {
   if (board_.generation<wb::Localization>() > 0) {
     if (const auto pose = truth_.robot_pose()) {
+      if (telemetry_ != nullptr && telemetry_->localization() != nullptr && frame % every_ == 0) {
+        telemetry_->record_true_pose(*pose);
+      }
       const wb::Localization l = board_.get<wb::Localization>();
       const double e = std::hypot(l.x - pose->x, l.y - pose->y);
       const double h = hal::rad_to_deg(std::abs(hal::wrap_angle(l.theta - pose->theta)));

@@ -1,17 +1,24 @@
 #include "ringlet/firmware/tasks/localization_task.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 
 #include "ringlet/localization/motion_model.hpp"
 
 namespace ringlet::firmware {
 
 std::unique_ptr<executive::Task> LocalizationTask::make(TaskServices& services) {
-  return std::make_unique<LocalizationTask>(services.board, services.config.localization);
+  return std::make_unique<LocalizationTask>(services.board, services.config.localization, &services.telemetry);
 }
 
-LocalizationTask::LocalizationTask(wb::Whiteboard& board, const LocalizationSettings& settings)
-    : board_(board), field_(settings.field), filter_(field_, settings.filter), side_(settings.side) {
+LocalizationTask::LocalizationTask(wb::Whiteboard& board, const LocalizationSettings& settings, Telemetry* telemetry)
+    : board_(board), field_(settings.field), filter_(field_, settings.filter), side_(settings.side), telemetry_(telemetry) {
+  if (telemetry_ != nullptr) {
+    const std::size_t n = filter_.particles().size();
+    snapshot_particles_.resize(n);
+    telemetry_->enable_localization(kMaxSnapshots, n, localization::Observations::kMaxLines);
+  }
   filter_.set_side_prior(side_);
   if (settings.start) {
     filter_.reset_to(*settings.start, settings.start_sigma_xy, settings.start_sigma_theta);
@@ -40,7 +47,7 @@ hal::Pose2 LocalizationTask::odometry_at(std::int64_t stamp_ns) const noexcept {
   return best;
 }
 
-void LocalizationTask::run(const executive::TaskContext& /*ctx*/) noexcept {
+void LocalizationTask::run(const executive::TaskContext& ctx) noexcept {
   const std::uint64_t terms_before = filter_.terms_evaluated();
   const std::uint64_t moved_before = filter_.particles_moved();
 
@@ -53,6 +60,8 @@ void LocalizationTask::run(const executive::TaskContext& /*ctx*/) noexcept {
   const wb::FieldLines lines = board_.get<wb::FieldLines>();
   const bool fresh = lines.sequence != last_lines_ && lines.capture_time_ns > 0;
   const localization::OdometryDelta moved = localization::delta_between(filter_odometry_, odometry_.pose());
+  // Where the estimate would be now without this activation's correction (for the picture).
+  const hal::Pose2 before = localization::apply(filter_.estimate().pose, moved);
   // Move the cloud when there is something to correct, or once it has gone 5 cm or 3°: the noise
   // floor per move then does not depend on the activation rate.
   if (fresh || std::fabs(moved.forward) + std::fabs(moved.left) > 0.05 || std::fabs(moved.turn) > 0.05) {
@@ -78,6 +87,21 @@ void LocalizationTask::run(const executive::TaskContext& /*ctx*/) noexcept {
     }
     filter_.correct(obs);
     ++observations_;
+    if (telemetry_ != nullptr) {
+      const hal::Pose2& after = filter_.estimate().pose;
+      const bool jumped = std::hypot(after.x - before.x, after.y - before.y) > kJumpM ||
+                          std::fabs(hal::wrap_angle(after.theta - before.theta)) > kJumpRad;
+      const hal::Nanos gap = ctx.frame_start - last_snapshot_;
+      if (!have_snapshot_) {
+        snapshot(ctx.frame_start, "start", obs);
+      } else if (filter_.relocalizations() != snapshot_relocalizations_) {
+        snapshot(ctx.frame_start, "relocalized", obs);
+      } else if (jumped && gap >= kMinJumpGap) {
+        snapshot(ctx.frame_start, "correction", obs);
+      } else if (gap >= kSnapshotEvery) {
+        snapshot(ctx.frame_start, "every 5 s", obs);
+      }
+    }
   }
   if (filter_.estimate().lost) ++lost_frames_;
   post(body.stamp_ns);
@@ -86,6 +110,26 @@ void LocalizationTask::run(const executive::TaskContext& /*ctx*/) noexcept {
   const auto moved_particles = static_cast<double>(filter_.particles_moved() - moved_before);
   cost_ = kModelledBase + hal::Nanos{static_cast<std::int64_t>(terms * kModelledNsPerTerm +
                                                                 moved_particles * kModelledNsPerParticleMoved)};
+}
+
+void LocalizationTask::snapshot(hal::Nanos when, std::string_view reason, const localization::Observations& obs) noexcept {
+  have_snapshot_ = true;
+  last_snapshot_ = when;
+  snapshot_relocalizations_ = filter_.relocalizations();
+  const std::span<const localization::Particle> cloud = filter_.particles();
+  for (std::size_t i = 0; i < cloud.size(); ++i) snapshot_particles_[i] = {cloud[i].x, cloud[i].y, cloud[i].theta};
+  // The segments (robot frame of now) into the world with the corrected estimate.
+  const hal::Pose2& e = filter_.estimate().pose;
+  // Robot frame → world (hal/geometry.hpp): ahead is (sin θ, cos θ), left is (−cos θ, sin θ).
+  const double s = std::sin(e.theta), c = std::cos(e.theta);
+  const auto world = [&](double x, double y) { return hal::WorldPoint{e.x + x * s - y * c, e.y + x * c + y * s}; };
+  for (std::size_t i = 0; i < obs.line_count; ++i) {
+    const localization::LineObservation& l = obs.lines[i];
+    snapshot_segments_[i] = {world(l.x0, l.y0), world(l.x1, l.y1)};
+  }
+  telemetry_->record_snapshot(std::chrono::duration<double>(when).count(), e, reason,
+                              std::span<const hal::Pose2>(snapshot_particles_.data(), cloud.size()),
+                              std::span<const hal::WorldSegment>(snapshot_segments_.data(), obs.line_count));
 }
 
 void LocalizationTask::post(std::int64_t stamp_ns) noexcept {

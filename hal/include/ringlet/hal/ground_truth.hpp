@@ -37,6 +37,31 @@ struct PlanPicture {
   std::span<const WorldPoint> reported;      // obstacles the controller reported to its planner
 };
 
+/// A segment in the world frame (m).
+struct WorldSegment {
+  WorldPoint a{};
+  WorldPoint b{};
+};
+
+/// One moment of the localization drawn: its estimate, the particles then and the observations
+/// that correction weighed (ground segments taken into the world with the estimate).
+struct LocalizationSnapshot {
+  double time_s = 0.0;
+  Pose2 estimate{};
+  std::uint32_t particles_end = 0;  // this snapshot's particles: particles[previous end .. particles_end)
+  std::uint32_t segments_end = 0;   // ... and its segments: segments[previous end .. segments_end)
+  std::string_view reason;          // why it was taken ("start", "relocalized", "correction", "every 5 s")
+};
+
+/// The localization over the run (all empty without one): the true trajectory beside the
+/// estimated one (RunPicture::trajectory) and snapshots of the filter.
+struct LocalizationPicture {
+  std::span<const Pose2> truth;                   // the simulator's true pose, in driving order
+  std::span<const LocalizationSnapshot> snapshots;
+  std::span<const Pose2> particles;               // every snapshot's particles, one after the other
+  std::span<const WorldSegment> segments;         // every snapshot's observed segments, likewise
+};
+
 /// What the controller did, to be drawn over the world.
 struct RunPicture {
   std::span<const Pose2> trajectory;      // in driving order
@@ -45,6 +70,7 @@ struct RunPicture {
   std::size_t goals_reached = 0;          // the first N goals are drawn as reached
   std::string_view caption;               // one line under the picture
   PlanPicture plans{};                    // the planner's map and plans, if any
+  LocalizationPicture localization{};     // true vs estimated pose and the filter, if any
 };
 
 class GroundTruth {

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "ringlet/hal/geometry.hpp"
@@ -44,6 +45,19 @@ struct PlanTrack {
   std::uint64_t missed_posts = 0;   // Plan generations overwritten before they were read
 };
 
+/// The localization over the run, for the picture: the true pose beside the estimate (the truth
+/// scorer records it, at the trajectory's cadence) and snapshots of the filter (the localization
+/// task records them: at its first correction, at each relocalization or large correction, and
+/// every few seconds), all in buffers sized at start-up.
+struct LocalizationTrack {
+  std::vector<hal::Pose2> truth;
+  std::vector<hal::LocalizationSnapshot> snapshots;
+  std::vector<hal::Pose2> particles;
+  std::vector<hal::WorldSegment> segments;
+  std::uint64_t dropped_truth = 0;      // true poses that did not fit
+  std::uint64_t dropped_snapshots = 0;  // snapshots that did not fit
+};
+
 class Telemetry {
  public:
   Telemetry(std::size_t trajectory_capacity, std::size_t collision_capacity);
@@ -68,6 +82,21 @@ class Telemetry {
   [[nodiscard]] const PlanTrack* plans() const noexcept { return plans_enabled_ ? &plans_ : nullptr; }
   /// The map and the plans for the picture (an empty PlanPicture without a planner).
   [[nodiscard]] hal::PlanPicture plan_picture() const noexcept;
+
+  /// Start-up only (allocates): room for `snapshots` snapshots of up to `particles` particles and
+  /// `segments` segments each (the true trajectory gets the estimated one's capacity).
+  LocalizationTrack& enable_localization(std::size_t snapshots, std::size_t particles, std::size_t segments);
+  void record_true_pose(const hal::Pose2& pose) noexcept;
+  /// Room for one more snapshot of `particles` particles and `segments` segments?
+  [[nodiscard]] bool snapshot_fits(std::size_t particles, std::size_t segments) const noexcept;
+  /// Records a snapshot (counted as dropped when it does not fit).
+  void record_snapshot(double time_s, const hal::Pose2& estimate, std::string_view reason,
+                       std::span<const hal::Pose2> particles, std::span<const hal::WorldSegment> segments) noexcept;
+  [[nodiscard]] const LocalizationTrack* localization() const noexcept {
+    return localization_enabled_ ? &localization_ : nullptr;
+  }
+  /// The true trajectory and the snapshots for the picture (empty without localization).
+  [[nodiscard]] hal::LocalizationPicture localization_picture() const noexcept;
 
   [[nodiscard]] std::span<const hal::Pose2> trajectory() const noexcept { return trajectory_; }
   [[nodiscard]] std::span<const hal::WorldPoint> collision_points() const noexcept { return collision_points_; }
@@ -101,6 +130,9 @@ class Telemetry {
   VisionStats vision_{};
   bool plans_enabled_ = false;
   PlanTrack plans_{};
+  bool localization_enabled_ = false;
+  std::size_t trajectory_capacity_ = 0;
+  LocalizationTrack localization_{};
 };
 
 }  // namespace ringlet::firmware

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "ringlet/executive/executive.hpp"
+#include "ringlet/firmware/telemetry.hpp"
 #include "ringlet/hal/ground_truth.hpp"
 #include "ringlet/whiteboard/whiteboard.hpp"
 
@@ -55,7 +56,11 @@ struct LocalizationScore {
 
 class TruthScore final : public executive::FrameObserver {
  public:
-  TruthScore(const hal::GroundTruth& truth, const wb::Whiteboard& board) noexcept : truth_(truth), board_(board) {}
+  /// `telemetry`: where the true pose goes every `every` frames once the localization has posted,
+  /// beside the estimated trajectory (null, or no localization recording: nowhere).
+  TruthScore(const hal::GroundTruth& truth, const wb::Whiteboard& board, Telemetry* telemetry = nullptr,
+             int every = 10) noexcept
+      : truth_(truth), board_(board), telemetry_(telemetry), every_(static_cast<std::uint64_t>(every > 0 ? every : 1)) {}
   void frame_done(std::uint64_t frame, hal::Nanos frame_start) noexcept override;
   [[nodiscard]] const HeadTracking& head_tracking() const noexcept { return head_; }
   [[nodiscard]] const LocalizationScore& localization() const noexcept { return loc_; }
@@ -63,6 +68,8 @@ class TruthScore final : public executive::FrameObserver {
  private:
   const hal::GroundTruth& truth_;
   const wb::Whiteboard& board_;
+  Telemetry* telemetry_;
+  std::uint64_t every_;
   HeadTracking head_{};
   LocalizationScore loc_{};
 };

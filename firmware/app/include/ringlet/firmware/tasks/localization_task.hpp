@@ -9,9 +9,17 @@
 // into the robot frame of now by the odometry between the two, so the camera's latency does not
 // bend the correction. The filter is moved by the odometry since the last activation that moved
 // it, then corrected. Everything is sized in make(); run() allocates nothing.
+//
+// For the run's picture it records snapshots into Telemetry (an observer: nothing it records is
+// read back): the particles and the observed segments, taken into the world with the estimate,
+// at the first correction, at each relocalization, at a correction that moves the estimate by
+// more than kJumpM or kJumpRad (at most one a second), and after kSnapshotEvery without one; at
+// most kMaxSnapshots, sized at start-up.
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string_view>
+#include <vector>
 
 #include "ringlet/executive/task.hpp"
 #include "ringlet/firmware/task_declaration.hpp"
@@ -32,9 +40,15 @@ class LocalizationTask final : public executive::Task {
   static constexpr double kModelledNsPerParticleMoved = 4 * 60.0;
   static constexpr double kModelledNsPerTerm = 4 * 25.0;
   static constexpr std::size_t kRing = 64;  // odometry poses kept: 0.64 s at 100 Hz
+  static constexpr std::size_t kMaxSnapshots = 40;
+  static constexpr hal::Nanos kSnapshotEvery{5'000'000'000};
+  static constexpr hal::Nanos kMinJumpGap{1'000'000'000};
+  static constexpr double kJumpM = 0.3;
+  static constexpr double kJumpRad = 0.35;  // 20°
 
   static std::unique_ptr<executive::Task> make(TaskServices& services);
-  LocalizationTask(wb::Whiteboard& board, const LocalizationSettings& settings);
+  /// `telemetry`: where the snapshots go (null: none are taken).
+  LocalizationTask(wb::Whiteboard& board, const LocalizationSettings& settings, Telemetry* telemetry = nullptr);
   void run(const executive::TaskContext& ctx) noexcept override;
   [[nodiscard]] hal::Nanos modelled_cost() const noexcept override { return cost_; }
 
@@ -47,6 +61,7 @@ class LocalizationTask final : public executive::Task {
   };
   [[nodiscard]] hal::Pose2 odometry_at(std::int64_t stamp_ns) const noexcept;
   void post(std::int64_t stamp_ns) noexcept;
+  void snapshot(hal::Nanos when, std::string_view reason, const localization::Observations& obs) noexcept;
 
   wb::Whiteboard& board_;
   localization::FieldModel field_;
@@ -60,6 +75,12 @@ class LocalizationTask final : public executive::Task {
   std::uint64_t observations_ = 0;
   std::uint64_t lost_frames_ = 0;
   hal::Nanos cost_{0};
+  Telemetry* telemetry_;
+  std::vector<hal::Pose2> snapshot_particles_;        // sized in the constructor
+  std::array<hal::WorldSegment, localization::Observations::kMaxLines> snapshot_segments_{};
+  bool have_snapshot_ = false;
+  hal::Nanos last_snapshot_{0};
+  std::uint64_t snapshot_relocalizations_ = 0;
 };
 
 }  // namespace ringlet::firmware
