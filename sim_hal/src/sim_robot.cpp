@@ -62,6 +62,11 @@ SimRobot::SimRobot(World world, const SimConfig& config)
                                 detail::format_number(state_.pose.y) +
                                 ") collides with an obstacle or the bounds");
   }
+  if (config_.kidnap.enabled && disc_collides(world_, Vec2{config_.kidnap.to.x, config_.kidnap.to.y}, config_.robot_radius)) {
+    throw std::invalid_argument("kidnap pose (" + detail::format_number(config_.kidnap.to.x) + ", " +
+                                detail::format_number(config_.kidnap.to.y) +
+                                ") collides with an obstacle or the bounds");
+  }
   if (config_.camera.enabled) camera_ = std::make_unique<SimCamera>(world_, config_.camera, config_.seed);
 }
 
@@ -102,6 +107,12 @@ bool SimRobot::in_safe_state() const noexcept { return safe_.load(std::memory_or
 void SimRobot::step() noexcept {
   const double dt = hal::to_seconds(config_.period);
   const bool safe = safe_.load(std::memory_order_acquire);
+  if (config_.kidnap.enabled && !kidnapped_ && hal::to_seconds(time_) >= config_.kidnap.at_s) {
+    kidnapped_ = true;  // picked up and put down: no distance driven, no odometry, no contact
+    state_.pose = config_.kidnap.to;
+    state_.velocity = 0.0;
+    in_contact_ = false;
+  }
 
   // Safe state: the drive is commanded to stop with the steering where it is. The speed still
   // falls at the acceleration limit, as a real drive's would; it does not vanish in one step.

@@ -61,6 +61,19 @@ std::shared_ptr<const BackendSettings> read_sim(Section& section, const std::fil
   s.body.sway_pitch = hal::deg_to_rad(section.number("body_sway_pitch_deg", hal::rad_to_deg(s.body.sway_pitch), 0.0, 10.0));
   s.body.sway_roll = hal::deg_to_rad(section.number("body_sway_roll_deg", hal::rad_to_deg(s.body.sway_roll), 0.0, 10.0));
   s.body.sway_period = section.number("body_sway_period", s.body.sway_period, 0.05, 60.0);
+  // A referee's pick-up: sim.kidnap = { at_s = 10.0, x = 1.0, y = -2.0, theta_deg = 90 }.
+  Section kidnap = section.sub("kidnap", "{ at_s = 10.0, x = 1.0, y = -2.0, theta_deg = 90 }");
+  if (kidnap.present()) {
+    for (const char* key : {"at_s", "x", "y"}) {
+      if (kidnap.find(key) == nullptr) kidnap.fail_missing(key, "required in sim.kidnap");
+    }
+    s.kidnap.enabled = true;
+    s.kidnap.at_s = kidnap.number("at_s", 0.0, 0.0, 1e6);
+    s.kidnap.to.x = kidnap.number("x", 0.0, -1e3, 1e3);
+    s.kidnap.to.y = kidnap.number("y", 0.0, -1e3, 1e3);
+    s.kidnap.to.theta = hal::wrap_angle(hal::deg_to_rad(kidnap.number("theta_deg", 0.0, -360.0, 360.0)));
+    kidnap.reject_unknown();
+  }
   return out;
 }
 

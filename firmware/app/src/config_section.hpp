@@ -111,6 +111,15 @@ class Section {
     throw ConfigError(where(file_, region) + ": " + qualified(key) + ": " + message);
   }
 
+  /// The inline table under `key` (e.g. sim.kidnap = { ... }) as a section of its own; a section
+  /// without a table when absent (present() false). `example` shows the form in the error.
+  Section sub(const std::string& key, const std::string& example) {
+    const toml::node* n = find(key);
+    if (n != nullptr && n->as_table() == nullptr) fail(*n, key, "must be a table, e.g. " + example);
+    return Section(n != nullptr ? n->as_table() : nullptr, qualified(key), file_,
+                   n != nullptr ? n->source() : fallback_);
+  }
+
   void reject_unknown() const {
     if (table_ == nullptr) return;
     for (auto&& [k, v] : *table_) {

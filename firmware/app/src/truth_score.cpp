@@ -38,10 +38,18 @@ void TruthScore::frame_done(std::uint64_t frame, hal::Nanos frame_start) noexcep
       loc_.max_position = std::max(loc_.max_position, e);
       loc_.position[std::min(loc_.position.size() - 1, static_cast<std::size_t>(e / LocalizationScore::kPositionBin))]++;
       loc_.heading[std::min(loc_.heading.size() - 1, static_cast<std::size_t>(h / LocalizationScore::kHeadingBin))]++;
-      if (board_.get<wb::Pose>().valid) {
+      const bool valid = board_.get<wb::Pose>().valid;
+      if (valid) {
         ++loc_.valid_frames;
         loc_.sum_valid_position += e;
       }
+      if (valid && e > LocalizationScore::kWrong) {
+        ++loc_.valid_wrong_frames;
+        loc_.longest_valid_wrong = std::max(loc_.longest_valid_wrong, ++loc_.current_valid_wrong);
+      } else {
+        loc_.current_valid_wrong = 0;
+      }
+      if (!valid || e > LocalizationScore::kWrong) loc_.last_not_good = frame_start;
     }
   }
   const auto ball = truth_.ball_in_robot_frame();

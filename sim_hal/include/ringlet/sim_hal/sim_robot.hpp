@@ -44,6 +44,14 @@ struct SimOdometryError {
   double curvature_sigma = 0.0;  // 1/m, per reading
 };
 
+/// A referee's pick-up: at `at_s` of simulated time the robot is lifted and put down at `to`,
+/// standing (speed 0, steering as it was); odometry does not see it. Deterministic.
+struct SimKidnap {
+  bool enabled = false;
+  double at_s = 0.0;
+  hal::Pose2 to{};
+};
+
 struct SimConfig {
   hal::Nanos period{10'000'000};  // one executive period per read()
   std::uint64_t seed = 1;
@@ -60,6 +68,7 @@ struct SimConfig {
   double battery_volts = 12.6;    // start voltage; drains slowly with distance driven
   SimBodyTilt body{};             // the torso's tilt (upright by default)
   SimCameraConfig camera{};       // off by default: rendering needs a thread and a few ms a frame
+  SimKidnap kidnap{};             // off by default
 };
 
 /// Throws std::invalid_argument naming the field when a value is out of range (the camera's
@@ -128,6 +137,7 @@ class SimRobot : public hal::Robot, private hal::Sensors, private hal::Actuators
   hal::ActuatorCommand command_{};
   std::atomic<bool> safe_{false};
   bool in_contact_ = false;
+  bool kidnapped_ = false;
   hal::Nanos time_{0};
   std::uint64_t steps_ = 0;
   std::uint64_t collisions_ = 0;

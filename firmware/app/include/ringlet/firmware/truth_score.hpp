@@ -45,6 +45,11 @@ struct LocalizationScore {
   std::uint64_t valid_frames = 0;  // Pose.valid
   double sum_position = 0.0, sum_heading_deg = 0.0, max_position = 0.0;
   double sum_valid_position = 0.0;
+  // Frames where Pose was valid but more than kWrong off the truth: the run's longest stretch of
+  // them, and when the estimate was last not good (invalid, or more than kWrong off).
+  static constexpr double kWrong = 0.5;  // m
+  std::uint64_t valid_wrong_frames = 0, longest_valid_wrong = 0, current_valid_wrong = 0;
+  hal::Nanos last_not_good{-1};
 
   [[nodiscard]] double mean_position() const noexcept { return frames == 0 ? 0.0 : sum_position / static_cast<double>(frames); }
   [[nodiscard]] double mean_heading_deg() const noexcept {
