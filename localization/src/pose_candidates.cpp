@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "ringlet/hal/portable_atan2.hpp"
+
 #include "ringlet/localization/gaussian.hpp"
 
 namespace ringlet::localization {
@@ -20,8 +22,8 @@ hal::Pose2 placing(double px, double py, double wx, double wy, double theta) noe
 }
 
 // The heading under which a robot-frame direction (dx, dy) points along world +y, and along +x.
-double heading_along_y(double dx, double dy) noexcept { return std::atan2(dy, dx); }
-double heading_along_x(double dx, double dy) noexcept { return std::atan2(dx, -dy); }
+double heading_along_y(double dx, double dy) noexcept { return hal::portable_atan2(dy, dx); }
+double heading_along_x(double dx, double dy) noexcept { return hal::portable_atan2(dx, -dy); }
 
 // Distance of the point (cx, cy) from the infinite line through a segment.
 double distance_to_line(const LineObservation& l, double cx, double cy) noexcept {

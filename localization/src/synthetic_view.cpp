@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ringlet/hal/portable_atan2.hpp"
 #include "ringlet/localization/gaussian.hpp"
 
 namespace ringlet::localization {
@@ -12,7 +13,7 @@ constexpr double kStep = 0.05;  // m between the sampled points of a field line
 bool visible(const hal::RobotPoint& p, const ViewParams& v) noexcept {
   const double r = std::sqrt(p.x * p.x + p.y * p.y);
   if (r < v.min_range || r > v.max_range) return false;
-  return std::fabs(hal::wrap_angle(std::atan2(p.y, p.x) - v.head_yaw)) <= v.half_fov;
+  return std::fabs(hal::wrap_angle(hal::portable_atan2(p.y, p.x) - v.head_yaw)) <= v.half_fov;
 }
 
 // Adds the visible runs of the world line (x0, y0)–(x1, y1) as robot-frame segments.

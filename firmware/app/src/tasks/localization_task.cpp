@@ -89,7 +89,7 @@ void LocalizationTask::run(const executive::TaskContext& ctx) noexcept {
     ++observations_;
     if (telemetry_ != nullptr) {
       const hal::Pose2& after = filter_.estimate().pose;
-      const bool jumped = std::hypot(after.x - before.x, after.y - before.y) > kJumpM ||
+      const bool jumped = std::sqrt((after.x - before.x) * (after.x - before.x) + (after.y - before.y) * (after.y - before.y)) > kJumpM ||
                           std::fabs(hal::wrap_angle(after.theta - before.theta)) > kJumpRad;
       const hal::Nanos gap = ctx.frame_start - last_snapshot_;
       if (!have_snapshot_) {
