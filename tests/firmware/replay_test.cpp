@@ -47,7 +47,7 @@ wb::MessageLog controller_messages(const std::filesystem::path& path) {
   const auto log = wb::read_message_log(path);
   EXPECT_TRUE(log.has_value()) << path;
   wb::MessageLog out = log.has_value() ? *log : wb::MessageLog{};
-  std::erase_if(out.messages, [](const wb::LoggedMessage& m) { return m.type == wb::ExecutiveTiming::kId; });
+  wb::drop_host_measurements(out);
   return out;
 }
 

@@ -363,6 +363,10 @@ Result<MessageLog> read_message_log(const std::filesystem::path& path, std::size
                            path.string());
 }
 
+void drop_host_measurements(MessageLog& log) {
+  std::erase_if(log.messages, [](const LoggedMessage& m) { return m.type == ExecutiveTiming::kId; });
+}
+
 std::optional<std::string> first_difference(const MessageLog& expected, const MessageLog& actual) {
   if (expected.dropped > 0) {
     return "the expected log dropped " + std::to_string(expected.dropped) +

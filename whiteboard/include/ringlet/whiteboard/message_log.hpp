@@ -119,6 +119,10 @@ inline constexpr std::size_t kMaxMessageLogBytes = std::size_t{1} << 30;
 /// The same, from bytes already in memory (`name` stands for the path in messages).
 [[nodiscard]] Result<MessageLog> parse_message_log(std::span<const std::byte> bytes, std::string_view name);
 
+/// Leaves out the messages that carry the host's measurements (ExecutiveTiming: measured task
+/// times), which differ between any two runs by nature; what is left is what the controller did.
+void drop_host_measurements(MessageLog& log);
+
 /// The first difference between two logs, as one line, or nullopt when they are equal (same
 /// messages, frames, generations and losses, neither dropped anything).
 [[nodiscard]] std::optional<std::string> first_difference(const MessageLog& expected, const MessageLog& actual);
