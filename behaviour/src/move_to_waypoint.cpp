@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::behaviour {
 
 double heading_error(const hal::Pose2& pose, const Waypoint& target) noexcept {
@@ -18,7 +20,7 @@ hal::DriveCommand move_to_waypoint(const hal::Pose2& pose, const Waypoint& targe
   const double turn = std::min(std::abs(error) / p.full_turn_error, 1.0);
   double speed = p.max_speed - (p.max_speed - p.min_speed) * turn;
   if (p.approach_radius > 0.0) {
-    const double distance = std::hypot(target.x - pose.x, target.y - pose.y);
+    const double distance = hal::portable_hypot(target.x - pose.x, target.y - pose.y);
     speed = std::min(speed, std::max(p.min_speed, p.max_speed * distance / p.approach_radius));
   }
   return {curvature, speed};

@@ -3,13 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::behaviour {
 
 bool obstacle_on_leg(std::span<const std::uint16_t> range_mm, double angle_min, double increment,
                      const hal::Pose2& pose, const Waypoint& target, double range, double corridor, double& ox,
                      double& oy) noexcept {
   const double lx = target.x - pose.x, ly = target.y - pose.y;
-  const double length = std::hypot(lx, ly);
+  const double length = hal::portable_hypot(lx, ly);
   if (length < 1e-6) return false;
   const double ux = lx / length, uy = ly / length;
   const double reach = std::min(range, length);

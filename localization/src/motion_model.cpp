@@ -12,11 +12,8 @@ OdometryDelta delta_between(const hal::Pose2& from, const hal::Pose2& to) noexce
 }
 
 hal::Pose2 apply(const hal::Pose2& pose, const OdometryDelta& d) noexcept {
-  // Robot frame → world: ahead is (sin θ, cos θ), left is (−cos θ, sin θ).
-  const double s = std::sin(pose.theta);
-  const double c = std::cos(pose.theta);
-  return {pose.x + d.forward * s - d.left * c, pose.y + d.forward * c + d.left * s,
-          hal::wrap_angle(pose.theta + d.turn)};
+  const hal::WorldPoint at = hal::RobotToWorld(pose).point(d.forward, d.left);
+  return {at.x, at.y, hal::wrap_angle(pose.theta + d.turn)};
 }
 
 hal::RobotPoint transform_point(const OdometryDelta& d, double x, double y) noexcept {

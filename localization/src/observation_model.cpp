@@ -65,24 +65,19 @@ double ObservationModel::line_error2(double wx, double wy, double dx) const noex
 }
 
 Fit ObservationModel::evaluate(const PreparedObservations& obs, const hal::Pose2& pose) const noexcept {
-  return evaluate(obs, pose.x, pose.y, std::sin(pose.theta), std::cos(pose.theta));
-}
-
-Fit ObservationModel::evaluate(const PreparedObservations& obs, double x, double y, double s, double c) const noexcept {
-  // Robot frame → world (hal/geometry.hpp): ahead is (s, c), left is (−c, s). The points of one
-  // segment are not independent evidence (one line, one fit): a segment scores the mean of its
-  // points' terms, floored, and the segments multiply.
+  // The points of one segment are not independent evidence (one line, one fit): a segment scores
+  // the mean of its points' terms, floored, and the segments multiply.
+  const hal::RobotToWorld to_world(pose);
   Fit fit;
   double sum = 0.0;
   for (std::size_t k = 0; k < obs.segment_count_; ++k) {
-    const double wdx = obs.dir_x_[k] * s - obs.dir_y_[k] * c;  // the segment's world direction, x part
+    const double wdx = to_world.direction(obs.dir_x_[k], obs.dir_y_[k]).x;  // the segment's world direction, x part
     double seg = 0.0;
     const std::size_t end = obs.first_point_[k] + obs.point_counts_[k];
     for (std::size_t i = obs.first_point_[k]; i < end; ++i) {
       const ObservedPoint& p = obs.points_[i];
-      const double wx = x + p.x * s - p.y * c;
-      const double wy = y + p.x * c + p.y * s;
-      seg += term(line_error2(wx, wy, wdx), p.inv_sigma2);
+      const hal::WorldPoint w = to_world.point(p.x, p.y);
+      seg += term(line_error2(w.x, w.y, wdx), p.inv_sigma2);
     }
     const double t = std::max(params_.min_term, seg / static_cast<double>(obs.point_counts_[k]));
     fit.likelihood *= t;
@@ -90,9 +85,8 @@ Fit ObservationModel::evaluate(const PreparedObservations& obs, double x, double
   }
   fit.terms = obs.segment_count_;
   if (obs.circle_seen_) {
-    const double wx = x + obs.circle_x_ * s - obs.circle_y_ * c;
-    const double wy = y + obs.circle_x_ * c + obs.circle_y_ * s;
-    const double t = term(circle_error2(wx, wy), circle_inv_sigma2_);
+    const hal::WorldPoint w = to_world.point(obs.circle_x_, obs.circle_y_);
+    const double t = term(circle_error2(w.x, w.y), circle_inv_sigma2_);
     for (int k = 0; k < params_.circle_terms; ++k) {
       fit.likelihood *= t;
       sum += t;

@@ -113,7 +113,7 @@ void ParticleFilter::correct(const Observations& obs) noexcept {
   // Weigh. The filter's fit (for the augmented-MCL averages) is the prior-weighted mean quality.
   double fit = 0.0;
   for (Particle& p : particles_) {
-    const Fit f = model_.evaluate(prepared_, p.x, p.y, std::sin(p.theta), std::cos(p.theta));
+    const Fit f = model_.evaluate(prepared_, hal::Pose2{p.x, p.y, p.theta});
     fit += p.weight * f.quality;
     p.weight *= f.likelihood;
   }
@@ -197,7 +197,10 @@ void ParticleFilter::update_estimate() noexcept {
   if (!e.lost && was_lost_) {
     // Recovered. Near the dead-reckoned last good pose (or its mirror): continuity says which
     // side. Anywhere else (a kidnap, an unknown start) the mirror explains the lines as well:
-    // the side prior decides if there is one, else the estimate stays ambiguous.
+    // the side prior decides if there is one, else the estimate stays ambiguous. Recovering away
+    // from a last good pose is a relocalization too: a kidnap the fit noticed first (lost), then
+    // the new place.
+    if (have_last_good_ && !near(e.pose) && !near(e.mirror)) ++relocalizations_;
     if (near(e.pose)) {
       flip_towards(e.pose);
     } else if (near(e.mirror)) {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "ringlet/hal/portable_atan2.hpp"
+#include "ringlet/hal/portable_math.hpp"
 
 #include "ringlet/localization/gaussian.hpp"
 
@@ -16,9 +16,8 @@ constexpr double kThroughCircle = 0.35;   // m: a line this close to the circle'
 
 // The robot pose that puts robot-frame point (px, py) at world (wx, wy) with heading theta.
 hal::Pose2 placing(double px, double py, double wx, double wy, double theta) noexcept {
-  const double s = std::sin(theta);
-  const double c = std::cos(theta);
-  return {wx - (px * s - py * c), wy - (px * c + py * s), hal::wrap_angle(theta)};
+  const hal::WorldPoint offset = hal::RobotToWorld(hal::Pose2{0.0, 0.0, theta}).direction(px, py);
+  return {wx - offset.x, wy - offset.y, hal::wrap_angle(theta)};
 }
 
 // The heading under which a robot-frame direction (dx, dy) points along world +y, and along +x.

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "ringlet/hal/portable_atan2.hpp"
+#include "ringlet/hal/portable_math.hpp"
 #include "ringlet/localization/gaussian.hpp"
 
 namespace ringlet::localization {
@@ -19,17 +19,17 @@ bool visible(const hal::RobotPoint& p, const ViewParams& v) noexcept {
 // Adds the visible runs of the world line (x0, y0)–(x1, y1) as robot-frame segments.
 void add_visible(Observations& obs, const hal::Pose2& truth, const ViewParams& v, double x0, double y0, double x1,
                  double y1, hal::SplitMix64& rng) {
-  const double len = std::hypot(x1 - x0, y1 - y0);
+  const double len = hal::portable_hypot(x1 - x0, y1 - y0);
   const auto n = static_cast<int>(len / kStep) + 1;
   bool in_run = false;
   hal::RobotPoint first{}, last{};
   const auto close_run = [&] {
     if (!in_run) return;
     in_run = false;
-    if (std::hypot(last.x - first.x, last.y - first.y) < 0.3) return;
+    if (hal::portable_hypot(last.x - first.x, last.y - first.y) < 0.3) return;
     if (uniform(rng) < v.drop) return;
     const auto jitter = [&](hal::RobotPoint p) {
-      const double s = v.noise + v.noise_per_m * std::hypot(p.x, p.y);
+      const double s = v.noise + v.noise_per_m * hal::portable_hypot(p.x, p.y);
       return hal::RobotPoint{p.x + s * standard_normal(rng), p.y + s * standard_normal(rng)};
     };
     const hal::RobotPoint a = jitter(first);
@@ -67,7 +67,7 @@ Observations synthetic_view(const FieldModel& field, const hal::Pose2& truth, co
   }
   if (rim_visible * 3 >= kRim) {
     const hal::RobotPoint c = hal::to_robot_frame(truth, 0.0, 0.0);
-    const double s = v.noise + v.noise_per_m * std::hypot(c.x, c.y);
+    const double s = v.noise + v.noise_per_m * hal::portable_hypot(c.x, c.y);
     obs.circle_seen = true;
     obs.circle_x = c.x + s * standard_normal(rng);
     obs.circle_y = c.y + s * standard_normal(rng);

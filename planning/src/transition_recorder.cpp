@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/hal/portable_math.hpp"
 #include "ringlet/planning/region_graph.hpp"
 
 namespace ringlet::planning {
@@ -34,7 +35,7 @@ bool TransitionRecorder::observe(const RegionGraph& graph, const TransitionSampl
     const RegionTransition t = graph.transition(entry_.region, k);
     out.features = transition_features(t);
     out.duration_s = static_cast<double>(s.time_ns - entry_.time_ns) * 1e-9;
-    out.achieved_speed = std::min(std::hypot(s.x - entry_.x, s.y - entry_.y) / out.duration_s, top_speed_);
+    out.achieved_speed = std::min(hal::portable_hypot(s.x - entry_.x, s.y - entry_.y) / out.duration_s, top_speed_);
     out.commanded_speed = commanded_sum_ / commanded_count_;  // at least the entry's sample
     out.frame = s.frame;
     out.time_ns = s.time_ns;

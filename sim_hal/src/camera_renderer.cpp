@@ -13,6 +13,8 @@
 #include "render_math.hpp"
 #include "vec2_math.hpp"
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::sim_hal {
 namespace {
 
@@ -142,7 +144,7 @@ void CameraRenderer::build_grid() {
       }
       for (std::size_t r = 0; r < world_.rings.size(); ++r) {
         const Ring& ring = world_.rings[r];
-        const double d = std::hypot(centre.x - ring.centre.x, centre.y - ring.centre.y);
+        const double d = hal::portable_hypot(centre.x - ring.centre.x, centre.y - ring.centre.y);
         if (std::fabs(d - ring.radius) <= half_diagonal + ring.width / 2.0) {
           list.push_back(static_cast<std::uint32_t>(r) | kRingBit);
         }

@@ -10,6 +10,8 @@
 #include "render_math.hpp"
 #include "ringlet/sim_hal/camera_renderer.hpp"
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::sim_hal {
 namespace {
 
@@ -50,7 +52,7 @@ void CameraRenderer::compute_truth() noexcept {
   truth_.lines_truncated = false;
   for (std::size_t m = 0; m < world_.markings.size(); ++m) {
     const Marking& mk = world_.markings[m];
-    const std::size_t n = sample_count(std::hypot(mk.b.x - mk.a.x, mk.b.y - mk.a.y));
+    const std::size_t n = sample_count(hal::portable_hypot(mk.b.x - mk.a.x, mk.b.y - mk.a.y));
     bool open = false;
     LineRunTruth run;
     run.marking = m;
@@ -127,7 +129,7 @@ void CameraRenderer::compute_object_truth() noexcept {
     BallTruth bt;
     bt.present = true;
     bt.position = hal::to_robot_frame(pose_, ball.position.x, ball.position.y);
-    bt.distance = std::hypot(bt.position.x, bt.position.y);
+    bt.distance = hal::portable_hypot(bt.position.x, bt.position.y);
     bt.bearing = std::atan2(bt.position.y, bt.position.x);
     const Vec3 rel = sub(Vec3{ball.position.x, ball.position.y, ball.radius}, origin_);
     const double z = dot(rel, axes_[2]);
@@ -165,7 +167,7 @@ void CameraRenderer::compute_object_truth() noexcept {
     RobotTruth rt;
     rt.circle = i;
     rt.foot = hal::to_robot_frame(pose_, c.centre.x, c.centre.y);
-    rt.distance = std::hypot(rt.foot.x, rt.foot.y);
+    rt.distance = hal::portable_hypot(rt.foot.x, rt.foot.y);
     rt.bearing = std::atan2(rt.foot.y, rt.foot.x);
     rt.heading = f.heading;
     rt.team = f.team;

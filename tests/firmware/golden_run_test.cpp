@@ -91,21 +91,16 @@ constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0x2b3a1ae0c646d27a
 // Issue 17 changed the SPL field on purpose: the robot has no GPS there (sense_no_gps) and drives
 // on the localization task's pose, so its trajectory and run hashes changed (the others did not).
 // Then the simulated wheel odometry got a real base's errors (SimOdometryError) in spl_field.toml.
-//
-// OPEN DEFECT (issue 17, found 2026-12-04): since the SPL field drives on localization, its
-// lockstep run is not bit-identical between x86-64 and aarch64 (every other golden run is). Not
-// the cause, by experiment: the odometry's noise (the same difference without it), libm's atan2
-// and hypot in the filter (now hal::portable_atan2 and sqrt: aarch64's hash moved, x86-64's did
-// not), libm's sin and cos in the filter (portable versions changed both hashes, still apart),
-// Eigen (scalar on both). Until it is found each architecture's hashes are pinned, so a change on
-// either is still caught; the README says so.
-#if defined(__aarch64__)
-constexpr Golden kSplField{"spl_field.toml (4 s)", 0xc6e19210ae8f4c01ULL, 0x3d323310fffe2257ULL};
-constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0xebc49607c482d180ULL, 0xb40c9724277e0982ULL};
-#else
-constexpr Golden kSplField{"spl_field.toml (4 s)", 0x96a3772c48c4bfddULL, 0xf0963325c4827142ULL};
-constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x3f363bc08c622ff7ULL, 0xa8508e1e73632771ULL};
-#endif
+// Then the defect that made the SPL field's run differ between x86-64 and aarch64 was found:
+// libm's hypot, which glibc rounds differently on the two (FMA on aarch64 only). BallTracker
+// aimed the head with it, vision (RANSAC, the fits, the line checks) and the simulated camera
+// measured lengths with it; the filter read what the camera saw, and resampling grew a last-bit
+// difference into another trajectory (`ringlet-wb-log diff` on the two architectures' --wb-log
+// named the first message: a HeadCommand at frame 15). The controller now uses
+// hal::portable_hypot (hal/portable_math.hpp): the SPL hashes changed on x86-64 too (the others
+// did not), and both architectures give these again.
+constexpr Golden kSplField{"spl_field.toml (4 s)", 0x08f3c7cef8dad328ULL, 0x3aef295be3fd3c09ULL};
+constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0xc832259f22dfb0edULL, 0x9ece726726ee95f1ULL};
 
 // The hybrid controller (planner + arbiter under Navigate): the courtyard's whole mission, and the
 // first 30 s of P&B's test world (the dead end found and planned around) and of the woods.

@@ -28,9 +28,9 @@ TEST(LocalizationInTheStack, AKidnapOnTheSplFieldIsReportedAndRecovered) {
   (void)run_mission(stack, cfg.mission.timeout_s, interrupt, log);
 
   const wb::Localization l = stack.whiteboard().get<wb::Localization>();
-  // The pick-up is reported as lost. (The filter's relocalization counter stays 0 here: it
-  // recovers through the lost state, which the counter's continuity test does not count; printed.)
+  // The pick-up is reported as lost, and the recovery at the new place as a relocalization.
   EXPECT_GT(l.lost_frames, 0U) << "the pick-up is reported lost meanwhile";
+  EXPECT_GE(l.relocalizations, 1U) << "the recovery 3.5 m from the dead-reckoned pose is a relocalization";
   const LocalizationScore& score = stack.truth_score()->localization();
   // Never driving on a pose more than 0.5 m wrong for longer than 0.3 s (30 frames).
   EXPECT_LE(score.longest_valid_wrong, 30U);

@@ -41,5 +41,27 @@ TEST(RobotFrame, HeadYawAtan2LooksAtThePointAndAgreesWithBearing) {
   EXPECT_NEAR(std::hypot(p.x, p.y), std::hypot(wx - pose.x, wy - pose.y), 1e-12);
 }
 
+TEST(RobotToWorld, FacingEastLeftIsNorthAndAheadIsEast) {
+  const RobotToWorld to_world(Pose2{1.0, 1.0, kPi / 2.0});
+  const WorldPoint left = to_world.point(0.0, 2.0);
+  EXPECT_NEAR(left.x, 1.0, 1e-12);
+  EXPECT_NEAR(left.y, 3.0, 1e-12);
+  const WorldPoint q = to_world(RobotPoint{3.0, -1.0});  // 3 ahead, 1 to the right
+  EXPECT_NEAR(q.x, 4.0, 1e-12);
+  EXPECT_NEAR(q.y, 0.0, 1e-12);
+  const WorldPoint d = to_world.direction(3.0, -1.0);  // the same without the translation
+  EXPECT_NEAR(d.x, 3.0, 1e-12);
+  EXPECT_NEAR(d.y, -1.0, 1e-12);
+}
+
+TEST(RobotToWorld, UndoesToRobotFrame) {
+  for (const Pose2 pose : {Pose2{2.0, -1.0, 0.3}, Pose2{-4.5, 3.0, -2.9}, Pose2{0.0, 0.0, kPi}}) {
+    const RobotPoint p = to_robot_frame(pose, -4.0, 5.0);
+    const WorldPoint w = RobotToWorld(pose)(p);
+    EXPECT_NEAR(w.x, -4.0, 1e-12);
+    EXPECT_NEAR(w.y, 5.0, 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace ringlet::hal

@@ -38,6 +38,7 @@ TEST(LocalizationFilter, TracksFromAKnownStart) {
   EXPECT_LT(worst, 0.4);
   EXPECT_LT(worst_heading, 0.25);
   EXPECT_GT(reliable, n * 95 / 100);
+  EXPECT_EQ(filter.relocalizations(), 0U) << "tracking is never a relocalization";
 }
 
 TEST(LocalizationFilter, OdometryAloneDriftsAndSaysSo) {
@@ -74,6 +75,7 @@ TEST(LocalizationFilter, RecoversFromAnUnknownStartInItsOwnHalf) {
   ASSERT_GE(recovered_at, 0.0);
   EXPECT_LT(recovered_at, 8.0);
   EXPECT_FALSE(silently_wrong);
+  EXPECT_EQ(filter.relocalizations(), 0U) << "a first fix is no relocalization";
   RecordProperty("recovery_s", std::to_string(recovered_at));
   std::printf("unknown start (own half): recovered after %.2f s\n", recovered_at);
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::vision {
 
 BallDetector::BallDetector(const BallParams& params, int width, int height)
@@ -86,10 +88,10 @@ BallDetection BallDetector::detect(const ClassImage& classes, const hal::CameraI
         const double t = (params_.radius_m - pose.position.z) / ray.z;
         d.ground = {pose.position.x + t * ray.x, pose.position.y + t * ray.y};
         d.ground_valid = true;
-        d.distance_m = std::hypot(d.ground.x, d.ground.y);
+        d.distance_m = hal::portable_hypot(d.ground.x, d.ground.y);
         d.bearing_rad = std::atan2(d.ground.y, d.ground.x);
         // The radius a ball there would have in the image.
-        const double depth = t * std::hypot(ray.x, ray.y, ray.z);
+        const double depth = t * hal::portable_hypot(ray.x, ray.y, ray.z);
         const double expected = k.fx * params_.radius_m / std::max(depth, 1e-6);
         const double ratio = radius / expected;
         consistency = std::clamp(std::min(ratio, 1.0 / ratio), 0.0, 1.0);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/hal/portable_math.hpp"
 #include "ringlet/vision/fit.hpp"
 
 namespace ringlet::vision {
@@ -100,7 +101,7 @@ BwBallDetector::Outline BwBallDetector::fit_outline(const ClassImage& classes, c
   if (static_cast<int>(n) < params_.min_outline_points) return {centre, 0.0};
   const IndexedPoints pts{outline_, std::span<const int>(kFirstSixteen.data(), n)};
   const auto fit = fit_circle_geometric(pts, {{centre.u, centre.v}, radius}, true, 5);
-  if (!fit || std::hypot(fit->centre.x - centre.u, fit->centre.y - centre.v) > radius) return {centre, 0.0};
+  if (!fit || hal::portable_hypot(fit->centre.x - centre.u, fit->centre.y - centre.v) > radius) return {centre, 0.0};
   // Roundness: the share of rays with an outline, less for outline points off the circle (RMS
   // against a quarter of the radius: a sample step of noise costs little, a square foot more).
   const double rms = circle_rms(*fit, pts);
@@ -270,7 +271,7 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
     if (expected_radius_px(k, pose, c.centre, &g) > 0.0) {
       b.ground = g;
       b.ground_valid = true;
-      b.distance_m = std::hypot(g.x, g.y);
+      b.distance_m = hal::portable_hypot(g.x, g.y);
       b.bearing_rad = std::atan2(g.y, g.x);
     }
   };

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <utility>
 
+#include "ringlet/hal/portable_math.hpp"
 #include "ringlet/vision/prng.hpp"
 
 namespace ringlet::vision {
@@ -23,7 +24,7 @@ struct Scored {
   double score = 0.0;
 };
 
-double distance(const hal::RobotPoint& a, const hal::RobotPoint& b) noexcept { return std::hypot(b.x - a.x, b.y - a.y); }
+double distance(const hal::RobotPoint& a, const hal::RobotPoint& b) noexcept { return hal::portable_hypot(b.x - a.x, b.y - a.y); }
 
 int bin_of(const Circle2& c, const hal::RobotPoint& p) noexcept {
   const double a = std::atan2(p.y - c.centre.y, p.x - c.centre.x);  // [−π, π]

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::vision {
 namespace {
 
@@ -92,7 +94,7 @@ double circle_rms(const Circle2& c, const IndexedPoints& pts) noexcept {
   if (pts.size() == 0) return 0.0;
   double s = 0.0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const double d = std::hypot(pts[i].x - c.centre.x, pts[i].y - c.centre.y) - c.radius;
+    const double d = hal::portable_hypot(pts[i].x - c.centre.x, pts[i].y - c.centre.y) - c.radius;
     s += d * d;
   }
   return std::sqrt(s / static_cast<double>(pts.size()));
@@ -109,7 +111,7 @@ std::optional<Circle2> fit_circle_geometric(const IndexedPoints& pts, const Circ
     for (std::size_t i = 0; i < pts.size(); ++i) {
       const double ux = pts[i].x - c.centre.x;
       const double uy = pts[i].y - c.centre.y;
-      const double d = std::hypot(ux, uy);
+      const double d = hal::portable_hypot(ux, uy);
       if (d < 1e-9) continue;  // a point at the centre has no direction
       const Eigen::Vector3d j{-ux / d, -uy / d, -1.0};
       const double r = d - c.radius;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::vision {
 
 ColourClass LineCheck::class_at(double x, double y) const noexcept {
@@ -100,7 +102,7 @@ int LineCheck::judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, 
 }
 
 LineCheck::Verdict LineCheck::assess(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept {
-  if (std::hypot(b.x - a.x, b.y - a.y) < 1e-9) return {};
+  if (hal::portable_hypot(b.x - a.x, b.y - a.y) < 1e-9) return {};
   const int n = std::max(params_.samples, 1);
   int judged = 0;
   int passed = 0;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "ringlet/hal/portable_math.hpp"
 #include "ringlet/vision/prng.hpp"
 #include "ringlet/vision/ransac.hpp"
 
@@ -26,7 +27,7 @@ void trim_to_paint(FieldLine& f, const hal::CameraIntrinsics& k, const hal::Came
   if (const auto p1 = hal::project(k, pose, {f.ground_end.x, f.ground_end.y, 0.0})) f.image_end = *p1;
 }
 
-double norm(double x, double y) noexcept { return std::hypot(x, y); }
+double norm(double x, double y) noexcept { return hal::portable_hypot(x, y); }
 
 bool on_circle(const CentreCircle& c, const hal::RobotPoint& q, double band) noexcept {
   return std::abs(norm(q.x - c.centre.x, q.y - c.centre.y) - c.radius_m) <= band;

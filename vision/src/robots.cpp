@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/hal/portable_math.hpp"
 #include "ringlet/vision/bw_ball.hpp"  // svm_confidence
 
 namespace ringlet::vision {
@@ -247,7 +248,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     if (!ground) continue;
     r.ground = *ground;
     const double eh = box.height;
-    const double near = std::hypot(r.ground.x, r.ground.y);
+    const double near = hal::portable_hypot(r.ground.x, r.ground.y);
     if (near > 0.0) {
       const double k_far = 1.0 + params_.foot_depth_m / near;
       r.ground = {r.ground.x * k_far, r.ground.y * k_far};
@@ -257,7 +258,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     r.width = box.width;
     r.left = box.left;
     r.top = box.top;
-    r.distance_m = std::hypot(r.ground.x, r.ground.y);
+    r.distance_m = hal::portable_hypot(r.ground.x, r.ground.y);
     r.bearing_rad = std::atan2(r.ground.y, r.ground.x);
     if (use_classifier) {
       if (deadline.expired()) {

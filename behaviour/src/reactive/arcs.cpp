@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::behaviour::reactive {
 
 std::string ArcSet::validate() const {
@@ -28,18 +30,18 @@ namespace {
 
 /// How close the arc comes to `p` within `limit` of travel (the start included).
 double closest_approach(double kappa, const hal::RobotPoint& p, double limit) noexcept {
-  const double here = std::hypot(p.x, p.y);
-  if (std::abs(kappa) < 1e-6) return p.x > 0.0 ? std::hypot(std::max(0.0, p.x - limit), p.y) : here;
+  const double here = hal::portable_hypot(p.x, p.y);
+  if (std::abs(kappa) < 1e-6) return p.x > 0.0 ? hal::portable_hypot(std::max(0.0, p.x - limit), p.y) : here;
   const double R = 1.0 / std::abs(kappa);
   const double qx = p.x, qy = (kappa > 0.0 ? p.y : -p.y) + R;
   double phi = std::atan2(qx, qy);
   if (phi < 0.0) phi += 2.0 * std::numbers::pi;
-  const double rho = std::hypot(qx, qy);
+  const double rho = hal::portable_hypot(qx, qy);
   if (R * phi <= limit) return std::abs(rho - R);  // the arc passes the point nearest to p
   // Else the nearest of the reachable arc is its end (the distance to p falls, then rises).
   const double a = limit / R;
   const double ex = R * std::sin(a), ey = (kappa > 0.0 ? -1.0 : 1.0) * R * (1.0 - std::cos(a));
-  return std::min(here, std::hypot(p.x - ex, p.y - ey));
+  return std::min(here, hal::portable_hypot(p.x - ex, p.y - ey));
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::behaviour::reactive {
 namespace {
 
@@ -49,7 +51,7 @@ void move_to_waypoint_votes(const ReactiveParams& p, const hal::RobotPoint& wayp
   // The tightest circle on the waypoint's side: centre (0, ∓R) in the robot frame (right: −R).
   const double r = 1.0 / p.arcs.max_curvature;
   const double cy = waypoint.y < 0.0 ? -r : r;
-  if (std::hypot(waypoint.x, waypoint.y - cy) < r) target = 0.0;
+  if (hal::portable_hypot(waypoint.x, waypoint.y - cy) < r) target = 0.0;
   for (int i = 0; i < p.arcs.count; ++i)
     out.vote[static_cast<std::size_t>(i)] = std::max(0.0, 1.0 - std::abs(p.arcs.curvature(i) - target) / p.vote_width);
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::firmware {
 
 namespace {
@@ -30,7 +32,7 @@ void TruthScore::frame_done(std::uint64_t frame, hal::Nanos frame_start) noexcep
         telemetry_->record_true_pose(*pose);
       }
       const wb::Localization l = board_.get<wb::Localization>();
-      const double e = std::hypot(l.x - pose->x, l.y - pose->y);
+      const double e = hal::portable_hypot(l.x - pose->x, l.y - pose->y);
       const double h = hal::rad_to_deg(std::abs(hal::wrap_angle(l.theta - pose->theta)));
       ++loc_.frames;
       loc_.sum_position += e;

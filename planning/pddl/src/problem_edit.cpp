@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ringlet/hal/portable_math.hpp"
+
 namespace ringlet::pddl {
 namespace {
 
@@ -33,7 +35,7 @@ double segment_distance(double x, double y, const Place& a, const Place& b) {
   const double len2 = dx * dx + dy * dy;
   double t = len2 > 0.0 ? ((x - a.x) * dx + (y - a.y) * dy) / len2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(x - (a.x + t * dx), y - (a.y + t * dy));
+  return hal::portable_hypot(x - (a.x + t * dx), y - (a.y + t * dy));
 }
 
 bool binary(const Domain& d, int predicate) {

@@ -120,12 +120,10 @@ void LocalizationTask::snapshot(hal::Nanos when, std::string_view reason, const 
   for (std::size_t i = 0; i < cloud.size(); ++i) snapshot_particles_[i] = {cloud[i].x, cloud[i].y, cloud[i].theta};
   // The segments (robot frame of now) into the world with the corrected estimate.
   const hal::Pose2& e = filter_.estimate().pose;
-  // Robot frame → world (hal/geometry.hpp): ahead is (sin θ, cos θ), left is (−cos θ, sin θ).
-  const double s = std::sin(e.theta), c = std::cos(e.theta);
-  const auto world = [&](double x, double y) { return hal::WorldPoint{e.x + x * s - y * c, e.y + x * c + y * s}; };
+  const hal::RobotToWorld to_world(e);
   for (std::size_t i = 0; i < obs.line_count; ++i) {
     const localization::LineObservation& l = obs.lines[i];
-    snapshot_segments_[i] = {world(l.x0, l.y0), world(l.x1, l.y1)};
+    snapshot_segments_[i] = {to_world.point(l.x0, l.y0), to_world.point(l.x1, l.y1)};
   }
   telemetry_->record_snapshot(std::chrono::duration<double>(when).count(), e, reason,
                               std::span<const hal::Pose2>(snapshot_particles_.data(), cloud.size()),

@@ -128,10 +128,12 @@ void PlannerTask::integrate_robots(const wb::Pose& pose) noexcept {
   if (gen == robots_seen_) return;  // none posted since (or no vision in the table)
   robots_seen_ = gen;
   const wb::RobotDetections d = board_.get<wb::RobotDetections>();
-  // Feet in the robot frame (x ahead, y left) to the world: ahead is (sin θ, cos θ), left (−cos θ, sin θ).
-  const double s = std::sin(pose.theta), c = std::cos(pose.theta);
-  for (std::size_t i = 0; i < std::min<std::size_t>(d.count, d.foot_x.size()); ++i)
-    mark(pose.x + d.foot_x[i] * s - d.foot_y[i] * c, pose.y + d.foot_x[i] * c + d.foot_y[i] * s);
+  // Feet in the robot frame (x ahead, y left) to the world.
+  const hal::RobotToWorld to_world(hal::Pose2{pose.x, pose.y, pose.theta});
+  for (std::size_t i = 0; i < std::min<std::size_t>(d.count, d.foot_x.size()); ++i) {
+    const hal::WorldPoint foot = to_world.point(d.foot_x[i], d.foot_y[i]);
+    mark(foot.x, foot.y);
+  }
 }
 
 void PlannerTask::record(const wb::Pose& pose, int region, const executive::TaskContext& ctx) noexcept {

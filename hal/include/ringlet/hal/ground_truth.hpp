@@ -13,12 +13,6 @@
 
 namespace ringlet::hal {
 
-/// A point in the world frame (m).
-struct WorldPoint {
-  double x = 0.0;
-  double y = 0.0;
-};
-
 /// A named point in the world frame: a PDDL problem's place.
 struct NamedPoint {
   WorldPoint at{};

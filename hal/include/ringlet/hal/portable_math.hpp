@@ -1,15 +1,33 @@
 #pragma once
-// atan2 from +, −, ×, ÷ and sqrt alone, each correctly rounded by IEEE 754, so the result is the
-// same bits on every host. libm's atan2 differs in its last bits between glibc's x86-64 (FMA)
-// and aarch64 code paths, and a lockstep run whose decisions read it would then differ too.
-// Accuracy: a few ulp (three half-angle reductions, then a Taylor series to x^25 with |x| < 0.05).
+// The libm functions whose last bits differ between hosts, rebuilt from +, −, ×, ÷ and sqrt alone,
+// each correctly rounded by IEEE 754 (and -ffp-contract=off, cmake/RingletWarnings.cmake), so the
+// result is the same bits on every host. A lockstep run whose decisions read libm's would differ
+// between x86-64 and aarch64:
+//   hypot: glibc 2.36 computes it with FMA on aarch64 and without on x86-64, even on a CPU with
+//     FMA: of 2·10⁵ random pairs in ±10, 12.5 % differed in the last bit. The code that runs in
+//     the controller uses portable_hypot, never std::hypot (cmake/RingletPortableMath.cmake lists
+//     the folders; the test PortableMath.NoLibmHypotInTheController holds them to it).
+//   atan2: glibc's x86-64 picks an FMA or a plain kernel by the CPU (ifunc). It agreed with
+//     aarch64 on an FMA CPU; the localization's chaotic resampling uses portable_atan2 regardless.
+// sin, cos, tan, atan, exp, log and pow agreed bit for bit over 2·10⁶ inputs between x86-64 (with
+// FMA) and aarch64 (qemu); they are used as they are.
 #include <cmath>
 #include <numbers>
 
 namespace ringlet::hal {
 
+/// sqrt(x² + y²), within 1 ulp of std::hypot. No guard against overflow or underflow of the
+/// squares: for |x|, |y| between 1e−150 and 1e150 (metres, pixels, velocities).
+[[nodiscard]] inline double portable_hypot(double x, double y) noexcept { return std::sqrt(x * x + y * y); }
+
+/// The same for a 3-vector.
+[[nodiscard]] inline double portable_hypot(double x, double y, double z) noexcept {
+  return std::sqrt(x * x + y * y + z * z);
+}
+
 namespace detail {
-/// atan(x) for 0 <= x <= 1.
+/// atan(x) for 0 <= x <= 1, within a few ulp: three half-angle reductions, then a Taylor series
+/// to x^25 with |x| < 0.05.
 [[nodiscard]] inline double portable_atan_unit(double x) noexcept {
   // atan(x) = 2 atan(x / (1 + sqrt(1 + x²))): three halvings take x from ≤ 1 to < 0.05.
   double scale = 1.0;

@@ -94,8 +94,6 @@ class ObservationModel {
 
   /// The fit of `pose` (hal convention: heading from +y towards +x) to the prepared observations.
   [[nodiscard]] Fit evaluate(const PreparedObservations& obs, const hal::Pose2& pose) const noexcept;
-  /// The same with sin/cos of the heading already computed (the filter's inner loop).
-  [[nodiscard]] Fit evaluate(const PreparedObservations& obs, double x, double y, double s, double c) const noexcept;
 
   [[nodiscard]] const ObservationParams& params() const noexcept { return params_; }
   [[nodiscard]] const FieldModel& field() const noexcept { return field_; }

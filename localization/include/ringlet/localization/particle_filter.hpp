@@ -87,7 +87,9 @@ class ParticleFilter {
   [[nodiscard]] std::uint64_t particles_moved() const noexcept { return particles_moved_; }
   [[nodiscard]] double fit_slow() const noexcept { return w_slow_; }
   [[nodiscard]] double fit_fast() const noexcept { return w_fast_; }
-  /// Times the main hypothesis jumped away from the dead-reckoned last good pose (kidnaps noticed).
+  /// Kidnaps noticed: times the estimate settled away from the dead-reckoned last good pose, by a
+  /// jump while tracking or by recovering elsewhere after being lost (not the first fix of an
+  /// unknown start: there is no last good pose then).
   [[nodiscard]] std::uint64_t relocalizations() const noexcept { return relocalizations_; }
   /// Particles the last correction replaced with candidates.
   [[nodiscard]] std::size_t last_injected() const noexcept { return last_injected_; }
