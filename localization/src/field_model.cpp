@@ -1,6 +1,7 @@
 #include "ringlet/localization/field_model.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace ringlet::localization {
 namespace {
@@ -67,13 +68,13 @@ FieldModel::FieldModel(const FieldDimensions& d) noexcept : dims_(d) {
 }
 
 double FieldModel::squared_distance_along_x(double x, double y) const noexcept {
-  double best = INFINITY;
+  double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < x_count_; ++i) best = std::fmin(best, squared_distance(x_lines_[i], x, y));
   return best;
 }
 
 double FieldModel::squared_distance_along_y(double x, double y) const noexcept {
-  double best = INFINITY;
+  double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < y_count_; ++i) best = std::fmin(best, squared_distance(y_lines_[i], y, x));
   return best;
 }
