@@ -1,14 +1,19 @@
 // The watchdog: its decision logic on virtual time, and the polling thread on the real clock
 // (bounded waits only; the single timing bound is a generous 2 s).
 #include <gtest/gtest.h>
+#include <pthread.h>
+#include <sched.h>
 
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <cstring>
+#include <string>
 #include <thread>
 
 #include "executive_test_support.hpp"
 #include "ringlet/executive/executive.hpp"
+#include "ringlet/executive/realtime.hpp"
 #include "ringlet/executive/watchdog.hpp"
 #include "ringlet/hal/monotonic_clock.hpp"
 
@@ -157,6 +162,64 @@ TEST(WatchdogThread, HungTaskInTheExecutiveTripsIt) {
   EXPECT_TRUE(dog.fired());
   EXPECT_TRUE(rig.actuators.in_safe_state());
   EXPECT_EQ(exec.frame_stats().frames, 5U);
+}
+
+TEST(WatchdogPriority, OneAboveTheCycle) {
+  const int top = sched_get_priority_max(SCHED_FIFO);
+  EXPECT_EQ(watchdog_priority(0), 0);  // no real-time cycle: the watchdog keeps the normal scheduler
+  EXPECT_EQ(watchdog_priority(50), 51);
+  EXPECT_EQ(watchdog_priority(top - 1), top);
+  EXPECT_EQ(watchdog_priority(top), top);  // nothing above the top: the same priority
+}
+
+TEST(WatchdogThread, TakesTheSchedFifoPriorityItIsGivenOrSaysWhyNot) {
+  // Granted where the process may (root, CAP_SYS_NICE, an RLIMIT_RTPRIO), refused elsewhere: both
+  // are legitimate here, so each outcome is checked for what it must then be.
+  hal::MonotonicClock clock;
+  FakeActuators actuators;
+  std::atomic<std::uint64_t> heartbeat{0};
+  WatchdogThread dog(clock, heartbeat, actuators, 10s, 2ms);
+  const auto warnings = set_fifo_priority(dog.native_handle(), 3, "watchdog");
+  int policy = -1;
+  sched_param param{};
+  ASSERT_EQ(pthread_getschedparam(dog.native_handle(), &policy, &param), 0);
+  if (warnings.empty()) {
+    EXPECT_EQ(policy, SCHED_FIFO);
+    EXPECT_EQ(param.sched_priority, 3);
+  } else {
+    ASSERT_EQ(warnings.size(), 1U);
+    EXPECT_NE(warnings[0].find("SCHED_FIFO priority not granted to the watchdog"), std::string::npos) << warnings[0];
+    EXPECT_NE(policy, SCHED_FIFO);
+  }
+  // The kernel shows it by name, so a check on the robot can find it.
+  char name[16] = {};
+  EXPECT_TRUE(eventually([&] {
+    return pthread_getname_np(dog.native_handle(), name, sizeof name) == 0 && std::strcmp(name, "rl-watchdog") == 0;
+  })) << "thread name: " << name;
+  dog.stop();
+  EXPECT_FALSE(dog.fired());
+}
+
+TEST(WatchdogThread, AnOutOfRangePriorityIsAWarningAndChangesNothing) {
+  hal::MonotonicClock clock;
+  FakeActuators actuators;
+  std::atomic<std::uint64_t> heartbeat{0};
+  WatchdogThread dog(clock, heartbeat, actuators, 10s, 2ms);
+  int before = -1;
+  sched_param before_param{};
+  ASSERT_EQ(pthread_getschedparam(dog.native_handle(), &before, &before_param), 0);
+  const int too_high = sched_get_priority_max(SCHED_FIFO) + 1;
+  const auto warnings = set_fifo_priority(dog.native_handle(), too_high, "watchdog");
+  ASSERT_EQ(warnings.size(), 1U);
+  EXPECT_NE(warnings[0].find("realtime priority " + std::to_string(too_high) + " for the watchdog is outside"),
+            std::string::npos)
+      << warnings[0];
+  int after = -1;
+  sched_param after_param{};
+  ASSERT_EQ(pthread_getschedparam(dog.native_handle(), &after, &after_param), 0);
+  EXPECT_EQ(after, before);
+  EXPECT_EQ(after_param.sched_priority, before_param.sched_priority);
+  dog.stop();
 }
 
 }  // namespace

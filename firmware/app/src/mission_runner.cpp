@@ -127,12 +127,18 @@ RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomi
       if (cfg.clock == ClockMode::kLockstep) timeout = std::max<hal::Nanos>(timeout, kLockstepWatchdog);
       const auto poll = std::max(cfg.executive.period / 2, hal::Nanos{1'000'000});
       watchdog.emplace(watchdog_clock, exec.heartbeat(), actuators, timeout, poll, &interrupt);
+      // Above the cycle's priority: a cycle spinning at SCHED_FIFO must not starve its watchdog.
+      if (const int priority = executive::watchdog_priority(cfg.realtime.fifo_priority); priority > 0) {
+        for (const auto& w : executive::set_fifo_priority(watchdog->native_handle(), priority, "watchdog")) {
+          log << "ringlet: warning: " << w << '\n';
+        }
+      }
     }
     {
       Narrator narrator(stack, log, duration_s);
       // The cycle's thread only, after every other thread has started (the watchdog, the
       // narrator, the remote bridge's), so that none of them inherits the cycle's SCHED_FIFO
-      // priority or its CPU: a cycle spinning on its CPU leaves the watchdog free to act.
+      // priority or its CPU. The watchdog has its own priority, one above (set above).
       for (const auto& w : executive::apply_realtime_settings(cfg.realtime)) log << "ringlet: warning: " << w << '\n';
       outcome.reason = exec.run(stack.frames_for(duration_s));
       if (remote != nullptr) remote->end_run();

@@ -1,5 +1,7 @@
 #include "ringlet/executive/watchdog.hpp"
 
+#include <pthread.h>
+
 #include <cstdio>
 
 namespace ringlet::executive {
@@ -35,6 +37,8 @@ void WatchdogThread::stop() noexcept {
 }
 
 void WatchdogThread::loop() noexcept {
+  // A name the kernel shows (/proc/PID/task/TID/comm, top -H), so its priority can be checked.
+  (void)pthread_setname_np(pthread_self(), "rl-watchdog");
   while (running_.load(std::memory_order_acquire)) {
     const Nanos now = clock_.now();
     if (shutdown_ != nullptr && shutdown_->load(std::memory_order_acquire) && !shutdown_seen_.load()) {

@@ -46,6 +46,9 @@ class WatchdogThread {
   [[nodiscard]] bool fired() const noexcept { return fired_.load(std::memory_order_acquire); }
   [[nodiscard]] bool shutdown_seen() const noexcept { return shutdown_seen_.load(std::memory_order_acquire); }
   [[nodiscard]] Nanos stalled_for() const noexcept { return Nanos{stalled_ns_.load(std::memory_order_acquire)}; }
+  /// The polling thread (named "rl-watchdog"), for its scheduler: set_fifo_priority(handle,
+  /// watchdog_priority(cycle's), "watchdog") puts it above the cycle (realtime.hpp).
+  [[nodiscard]] std::thread::native_handle_type native_handle() noexcept { return thread_.native_handle(); }
 
  private:
   void loop() noexcept;
