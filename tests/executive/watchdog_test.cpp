@@ -172,54 +172,67 @@ TEST(WatchdogPriority, OneAboveTheCycle) {
   EXPECT_EQ(watchdog_priority(top), top);  // nothing above the top: the same priority
 }
 
-TEST(WatchdogThread, TakesTheSchedFifoPriorityItIsGivenOrSaysWhyNot) {
-  // Granted where the process may (root, CAP_SYS_NICE, an RLIMIT_RTPRIO), refused elsewhere: both
-  // are legitimate here, so each outcome is checked for what it must then be.
+// A thread's scheduler as the kernel reports it; policy -1 if it could not be read.
+struct Scheduler {
+  int policy = -1;
+  int priority = -1;
+};
+Scheduler scheduler_of(pthread_t thread) {
+  Scheduler s;
+  sched_param param{};
+  if (pthread_getschedparam(thread, &s.policy, &param) != 0) return Scheduler{};
+  s.priority = param.sched_priority;
+  return s;
+}
+
+// A watchdog that never fires during a test (10 s timeout, the heartbeat never read as stalled
+// that long), for what concerns its thread rather than its decisions.
+struct IdleWatchdog {
   hal::MonotonicClock clock;
   FakeActuators actuators;
   std::atomic<std::uint64_t> heartbeat{0};
-  WatchdogThread dog(clock, heartbeat, actuators, 10s, 2ms);
-  const auto warnings = set_fifo_priority(dog.native_handle(), 3, "watchdog");
-  int policy = -1;
-  sched_param param{};
-  ASSERT_EQ(pthread_getschedparam(dog.native_handle(), &policy, &param), 0);
+  WatchdogThread dog{clock, heartbeat, actuators, 10s, 2ms};
+};
+
+TEST(WatchdogThread, TakesTheSchedFifoPriorityItIsGivenOrSaysWhyNot) {
+  // Granted where the process may (root, CAP_SYS_NICE, an RLIMIT_RTPRIO), refused elsewhere: both
+  // are legitimate here, so each outcome is checked for what it must then be.
+  IdleWatchdog w;
+  const auto warnings = set_fifo_priority(w.dog.native_handle(), 3, "watchdog");
+  const Scheduler now = scheduler_of(w.dog.native_handle());
+  ASSERT_NE(now.policy, -1);
   if (warnings.empty()) {
-    EXPECT_EQ(policy, SCHED_FIFO);
-    EXPECT_EQ(param.sched_priority, 3);
+    EXPECT_EQ(now.policy, SCHED_FIFO);
+    EXPECT_EQ(now.priority, 3);
   } else {
     ASSERT_EQ(warnings.size(), 1U);
     EXPECT_NE(warnings[0].find("SCHED_FIFO priority not granted to the watchdog"), std::string::npos) << warnings[0];
-    EXPECT_NE(policy, SCHED_FIFO);
+    EXPECT_NE(now.policy, SCHED_FIFO);
   }
   // The kernel shows it by name, so a check on the robot can find it.
   char name[16] = {};
   EXPECT_TRUE(eventually([&] {
-    return pthread_getname_np(dog.native_handle(), name, sizeof name) == 0 && std::strcmp(name, "rl-watchdog") == 0;
+    return pthread_getname_np(w.dog.native_handle(), name, sizeof name) == 0 && std::strcmp(name, "rl-watchdog") == 0;
   })) << "thread name: " << name;
-  dog.stop();
-  EXPECT_FALSE(dog.fired());
+  w.dog.stop();
+  EXPECT_FALSE(w.dog.fired());
 }
 
 TEST(WatchdogThread, AnOutOfRangePriorityIsAWarningAndChangesNothing) {
-  hal::MonotonicClock clock;
-  FakeActuators actuators;
-  std::atomic<std::uint64_t> heartbeat{0};
-  WatchdogThread dog(clock, heartbeat, actuators, 10s, 2ms);
-  int before = -1;
-  sched_param before_param{};
-  ASSERT_EQ(pthread_getschedparam(dog.native_handle(), &before, &before_param), 0);
+  IdleWatchdog w;
+  const Scheduler before = scheduler_of(w.dog.native_handle());
+  ASSERT_NE(before.policy, -1);
   const int too_high = sched_get_priority_max(SCHED_FIFO) + 1;
-  const auto warnings = set_fifo_priority(dog.native_handle(), too_high, "watchdog");
+  const auto warnings = set_fifo_priority(w.dog.native_handle(), too_high, "watchdog");
   ASSERT_EQ(warnings.size(), 1U);
   EXPECT_NE(warnings[0].find("realtime priority " + std::to_string(too_high) + " for the watchdog is outside"),
             std::string::npos)
       << warnings[0];
-  int after = -1;
-  sched_param after_param{};
-  ASSERT_EQ(pthread_getschedparam(dog.native_handle(), &after, &after_param), 0);
-  EXPECT_EQ(after, before);
-  EXPECT_EQ(after_param.sched_priority, before_param.sched_priority);
-  dog.stop();
+  const Scheduler after = scheduler_of(w.dog.native_handle());
+  ASSERT_NE(after.policy, -1);
+  EXPECT_EQ(after.policy, before.policy);
+  EXPECT_EQ(after.priority, before.priority);
+  w.dog.stop();
 }
 
 }  // namespace

@@ -138,7 +138,7 @@ RunOutcome run_mission(FirmwareStack& stack, double duration_s, const std::atomi
       Narrator narrator(stack, log, duration_s);
       // The cycle's thread only, after every other thread has started (the watchdog, the
       // narrator, the remote bridge's), so that none of them inherits the cycle's SCHED_FIFO
-      // priority or its CPU. The watchdog has its own priority, one above (set above).
+      // priority or its CPU. The watchdog got its own priority, one above the cycle's, when it started.
       for (const auto& w : executive::apply_realtime_settings(cfg.realtime)) log << "ringlet: warning: " << w << '\n';
       outcome.reason = exec.run(stack.frames_for(duration_s));
       if (remote != nullptr) remote->end_run();
