@@ -241,7 +241,6 @@ std::optional<Ddsperf> measure_ddsperf(const Options& o) {
   ::close(ping_fd);
   std::ifstream in(ping_log);
   std::string line;
-  std::optional<Ddsperf> best;
   // "... mean 28.929us min 18.664us 50% 27.907us 90% 32.661us 99% 40.475us max 483.507us cnt 885"
   const std::regex re(R"(50% ([0-9.]+)us .*99% ([0-9.]+)us .*cnt ([0-9]+))");
   std::vector<double> p50, p99;
