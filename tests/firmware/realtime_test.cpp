@@ -26,14 +26,12 @@ namespace {
 // development VM, 12 loaded runs while other builds loaded it as well: sense p95 45-102 us, p99
 // 80-152 us and once 1070 us; vision p95 1.5-1.8 ms, p99 up to 2.5 ms. The budgets (sense 200 us,
 // vision 3 ms) are about twice the worst p95 measured. p50, p95 and p99 are printed for the record.
-constexpr double kJudgedQuantile = 0.95;
-
 // Under qemu-aarch64 or a sanitizer the median is judged instead: a loaded emulated run gets only
 // 15-60 of its 200 frames, so p95 is the largest sample or close to it, and the first activations
 // of a task carry qemu's translation of its code into host code, which thread CPU time counts (the
 // CI once measured the whiteboard task's first of 15 activations at 7.0 ms against its scaled
 // 4.1 ms). That is the emulator's one-off cost, not the task's.
-double judged_here(double quantile) { return test::kNativeSpeed ? quantile : 0.5; }
+constexpr double kJudgedQuantile = test::kNativeSpeed ? 0.95 : 0.5;
 
 // `p99_tasks`: tasks also judged at p99 (the navigation tasks: their budgets leave a wide margin,
 // and the issue asks for p99).
@@ -43,7 +41,6 @@ double judged_here(double quantile) { return test::kNativeSpeed ? quantile : 0.5
 void run_two_seconds_and_check(double quantile, const std::filesystem::path& config = test::kSplConfig,
                                std::initializer_list<std::string_view> p99_tasks = {},
                                std::initializer_list<std::string_view> unjudged = {}, double machine = 1.0) {
-  quantile = judged_here(quantile);
   // By default the main job's stack: camera (render thread) and vision included.
   auto text = test::shipped_config_text(config);
   text = test::with_line(text, "clock", "clock = \"realtime\"");
