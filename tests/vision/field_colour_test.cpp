@@ -282,7 +282,13 @@ TEST(FieldColour, NoFieldInViewHoldsThenFallsBackToTheTable) {
 // A dull carpet below a grey floor and grey robots covering most of the view: the grey's mass
 // sits in the chroma bins next to the carpet's. The field's peak and centre are taken over
 // green-ish bins only, so the grey neither wins the peak nor drags the cluster's median to grey.
-TEST(FieldColour, DullCarpetBesideMoreGreyIsStillTheField) {
+// A 640 × 480 YUYV frame of two surfaces: `second(x, y)` picks, per pixel pair, `b` over `a`
+// (mean Y, U, V and the ± jitter of Y and of U, V).
+struct Surface {
+  int y, u, v, y_noise, uv_noise;
+};
+template <typename Pick>
+testing::Frame two_surfaces(const Surface& a, const Surface& b, Pick second) {
   const int w = 640, h = 480;
   testing::Frame f;
   f.view.format = hal::PixelFormat::kYuyv;
@@ -292,16 +298,23 @@ TEST(FieldColour, DullCarpetBesideMoreGreyIsStillTheField) {
   f.bytes.resize(static_cast<std::size_t>(f.view.stride) * h);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; x += 2) {
-      const bool carpet = y >= 300;  // 37.5 % of the view
+      const Surface& s = second(x, y) ? b : a;
       const auto seed = static_cast<std::uint32_t>(y * w + x);
       std::uint8_t* p = f.bytes.data() + static_cast<std::size_t>(y * f.view.stride + 2 * x);
-      p[0] = static_cast<std::uint8_t>(jitter(carpet ? 100 : 125, 3, mix(seed)));
-      p[1] = static_cast<std::uint8_t>(jitter(carpet ? 118 : 127, 2, mix(seed + 1)));
-      p[2] = static_cast<std::uint8_t>(jitter(carpet ? 100 : 125, 3, mix(seed + 2)));
-      p[3] = static_cast<std::uint8_t>(jitter(carpet ? 124 : 129, 2, mix(seed + 3)));
+      p[0] = static_cast<std::uint8_t>(jitter(s.y, s.y_noise, mix(seed)));
+      p[1] = static_cast<std::uint8_t>(jitter(s.u, s.uv_noise, mix(seed + 1)));
+      p[2] = static_cast<std::uint8_t>(jitter(s.y, s.y_noise, mix(seed + 2)));
+      p[3] = static_cast<std::uint8_t>(jitter(s.v, s.uv_noise, mix(seed + 3)));
     }
   }
   f.view.data = f.bytes.data();
+  return f;
+}
+
+TEST(FieldColour, DullCarpetBesideMoreGreyIsStillTheField) {
+  const int w = 640;
+  // The carpet below row 300: 37.5 % of the view.
+  const testing::Frame f = two_surfaces({125, 127, 129, 3, 2}, {100, 118, 124, 3, 2}, [](int, int y) { return y >= 300; });
   const std::vector<int> rows(static_cast<std::size_t>(w), 0);
   const FieldColourEstimate e = FieldColourEstimator::measure(f.view, rows, {});
   ASSERT_TRUE(e.valid);
@@ -309,6 +322,28 @@ TEST(FieldColour, DullCarpetBesideMoreGreyIsStillTheField) {
   EXPECT_NEAR(e.v, 124, 2);
   EXPECT_NEAR(e.y, 100, 3);
   EXPECT_NEAR(e.confidence, 0.375, 0.03);
+}
+
+// Near the camera a painted line is wide: it may cover most of a colour cell. Cream paint in warm
+// light has nearly the field's chroma, so its samples pass for field; were they counted in the
+// cell's carpet luminance, that cell's line threshold would rise above the paint itself (seen on
+// rendered daylight frames: a cell's "field" Y of 210 from the paint over carpet of 100).
+TEST(FieldColour, AWideLineFillingACellIsNotThatCellsCarpet) {
+  const int w = 640, h = 480;
+  // Cell (column 3, row 6) spans x 240-319, y 360-419; the paint covers x 244-303 (three quarters).
+  // Field chroma (-28, -4); the paint's (-31, +1) is within the field's cone.
+  const testing::Frame f = two_surfaces({100, 100, 124, 3, 1}, {220, 97, 129, 3, 1},
+                                        [](int x, int y) { return x >= 244 && x < 304 && y >= 360 && y < 420; });
+  const std::vector<int> rows(static_cast<std::size_t>(w), 0);
+  const FieldColourEstimate e = FieldColourEstimator::measure(f.view, rows, {});
+  ASSERT_TRUE(e.valid);
+  const int cell = 6 * kColourCellsX + 3;
+  ASSERT_NE((e.field_cells >> cell) & 1U, 0U) << "the paint's samples still count as field there";
+  EXPECT_NEAR(e.cell_y[static_cast<std::size_t>(cell)], 100, 6) << "the carpet's luminance, not the paint's";
+  AdaptiveClassifier adaptive;
+  adaptive.build(e, w, h);
+  EXPECT_EQ(adaptive.classify(220, 97, 129, cell), ColourClass::kLine);
+  EXPECT_EQ(adaptive.classify(100, 100, 124, cell), ColourClass::kField);
 }
 
 // Shade scales chroma with brightness. A pixel with a fraction of the field's chroma is shaded

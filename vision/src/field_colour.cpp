@@ -25,6 +25,17 @@ int percentile(const std::array<std::uint16_t, N>& h, int total, int num, int de
   return static_cast<int>(N) - 1;
 }
 
+// The least Y a line pixel needs over field of luminance `fy` (Y spread `spread`): the margin
+// max(line_margin, k·spread, ratio·Y), but never more than line_headroom of the way to white (and
+// at least line_margin): on bright or sunlit carpet 0.25·Y or 3·spread would leave the paint,
+// clipped at 255, no room to pass.
+int line_threshold(int fy, int spread, const AdaptiveColourParams& p) noexcept {
+  const int margin = std::max({p.line_margin, static_cast<int>(std::lround(p.line_margin_k * spread)),
+                               static_cast<int>(std::lround(p.line_margin_ratio * fy))});
+  const int headroom = std::max(p.line_margin, static_cast<int>(std::lround(p.line_headroom * (255 - fy))));
+  return fy + std::min(margin, headroom);
+}
+
 std::uint8_t clamp_byte(long x) noexcept { return static_cast<std::uint8_t>(std::clamp(x, 0L, 255L)); }
 
 // s + w/256 · (m − s), rounded half away from zero: integer, so every host agrees.
@@ -175,19 +186,31 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
   for (auto& h : cell_hist_) h.fill(0);
   std::array<int, kColourCells> cell_n{};
   int field = 0;
+  const int paint_y = line_threshold(e.y, e.y_spread, params);
+  std::array<int, kColourCells> cell_paint{};
   for (int i = 0; i < n; ++i) {
     const Sample& s = samples_[static_cast<std::size_t>(i)];
     if (!rule.field(s.yuv.u, s.yuv.v) || (s.yuv.y * 256L > pale_y256 && rule.pale(s.yuv.u, s.yuv.v))) continue;
     ++field;
-    ++cell_hist_[s.cell][s.yuv.y >> 2];
     ++cell_n[s.cell];
+    // Paint of the field's tint (cream lines in warm light): field chroma, but what the frame's
+    // rule would call line must not become the cell's carpet luminance, or a near, wide line
+    // filling much of its cell raises the cell's line threshold above itself.
+    if (s.yuv.y >= paint_y && rule.unsaturated(s.yuv.u, s.yuv.v)) {
+      ++cell_paint[s.cell];
+      continue;
+    }
+    ++cell_hist_[s.cell][s.yuv.y >> 2];
   }
   e.field_samples = field;
   const double fraction = static_cast<double>(field) / static_cast<double>(n);
   if (fraction < params.min_field_fraction || !green) return e;
   for (std::size_t c = 0; c < e.cell_y.size(); ++c) {
     const bool field_here = cell_n[c] >= std::max(params.min_cell_samples, 1);
-    e.cell_y[c] = field_here ? clamp_byte(percentile(cell_hist_[c], cell_n[c], 1, 2) * 4 + 2) : e.y;
+    const int carpet = cell_n[c] - cell_paint[c];
+    e.cell_y[c] = field_here && carpet > 0
+                      ? clamp_byte(percentile(cell_hist_[c], carpet, 1, 2) * 4 + 2)
+                      : e.y;
     if (field_here) e.field_cells |= std::uint64_t{1} << c;
   }
   e.valid = true;
@@ -258,15 +281,9 @@ void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int heig
   const int spread_y = e.y_spread;
   for (int c = 0; c < kColourCells; ++c) {
     const int fy = e.cell_y[static_cast<std::size_t>(c)];
-    const int margin = std::max({p.line_margin, static_cast<int>(std::lround(p.line_margin_k * spread_y)),
-                                 static_cast<int>(std::lround(p.line_margin_ratio * fy))});
     // Lines only where there is field (a grey floor or wall beyond the carpet is bright and
     // unsaturated too); may exceed 255: no line in that cell.
-    // The margin never asks more than line_headroom of the way from the field to white (but at
-    // least line_margin): on bright or sunlit carpet 0.25·Y or 3·spread would leave the paint,
-    // clipped at 255, no room to pass.
-    const int headroom = std::max(p.line_margin, static_cast<int>(std::lround(p.line_headroom * (255 - fy))));
-    const int line_y = ((e.field_cells >> c) & 1U) != 0 ? fy + std::min(margin, headroom) : 256;
+    const int line_y = ((e.field_cells >> c) & 1U) != 0 ? line_threshold(fy, spread_y, p) : 256;
     const int field_lo = fy - std::max(p.field_y_below, static_cast<int>(std::lround(p.field_y_k * spread_y)));
     line_y_[static_cast<std::size_t>(c)] = line_y;
     field_lo_[static_cast<std::size_t>(c)] = field_lo;

@@ -35,6 +35,7 @@ struct Options {
   std::string lut;
   std::string overlay;
   std::string classes;
+  bool draw_candidates = false;
   tools::CameraOptions camera;
   std::uint64_t seed = RansacParams{}.seed;
   int max_trials = RansacParams{}.max_trials;
@@ -116,6 +117,7 @@ int run(const Options& o) {
   if (!o.overlay.empty()) {
     cv::Mat drawn = bgr.clone();
     tools::draw_result(drawn, result, config.intrinsics, hal::CameraPose::from_posture(config.mount, posture));
+    if (o.draw_candidates) tools::draw_candidates(drawn, pipeline.candidates().points());
     bool written = false;
     try {
       written = cv::imwrite(o.overlay, drawn);
@@ -141,6 +143,9 @@ int main(int argc, char** argv) {
   app.add_option("--lut", o.lut, "colour table file (RLUT, from ringlet-vision-calibrate); default: the built-in "
                                  "default thresholds");
   app.add_option("--overlay", o.overlay, "also write the picture with the detections drawn over it (PNG or JPEG)");
+  app.add_flag("--candidates", o.draw_candidates,
+               "with --overlay: also draw the line candidates the scan lines found (vertical scans magenta, "
+               "horizontal cyan): where lines are missed, this shows whether the scan or RANSAC lost them");
   app.add_option("--classes", o.classes, "also write the picture with the colour classes drawn over it (field "
                                          "green, line white, ball orange, other dark; PNG or JPEG)");
   app.add_option("--seed", o.seed, "RANSAC seed (the frame's stream is derived from it)")->capture_default_str();

@@ -216,6 +216,29 @@ nlohmann::json result_json(const VisionResult& r) {
                                        {"y_spread", r.field_colour.y_spread}, {"uv_spread", r.field_colour.uv_spread},
                                        {"confidence", r.field_colour.confidence}}},
                      {"horizon_row", r.horizon_row}};
+  // The local field luminance per image cell (rows of the 8 x 8 grid); null where the cell held
+  // too little field to measure: lines are never classified there.
+  nlohmann::json cells = nlohmann::json::array();
+  for (int row = 0; row < kColourCellsY; ++row) {
+    nlohmann::json cells_row = nlohmann::json::array();
+    for (int col = 0; col < kColourCellsX; ++col) {
+      const int c = row * kColourCellsX + col;
+      if (r.field_colour.valid && ((r.field_colour.field_cells >> c) & 1U) != 0) {
+        cells_row.push_back(r.field_colour.cell_y[static_cast<std::size_t>(c)]);
+      } else {
+        cells_row.push_back(nullptr);
+      }
+    }
+    cells.push_back(cells_row);
+  }
+  out["field_colour"]["cell_y"] = cells;
+  // What became of the candidates: why pieces were not reported as lines.
+  const RansacStats& rs = r.ransac;
+  out["line_stats"] = {{"rounds_with_a_line", rs.lines_extracted}, {"too_sparse", rs.sparse_rejected},
+                       {"not_paint", rs.check_rejected},         {"arcs", rs.arcs_rejected},
+                       {"circle_points", rs.circle_points},      {"splits", rs.splits},
+                       {"merges", rs.merges},                    {"beyond_max_lines", rs.segments_dropped},
+                       {"stopped_by_deadline", rs.stopped_early}};
   if (r.circle.seen) {
     out["circle"] = {{"seen", true},
                      {"centre", {r.circle.centre.x, r.circle.centre.y}},
@@ -280,6 +303,13 @@ TimeStats time_stats(std::vector<hal::Nanos>& samples) {
 
 nlohmann::json to_json(const TimeStats& s) {
   return {{"min", s.min_ms}, {"median", s.median_ms}, {"p99", s.p99_ms}, {"max", s.max_ms}};
+}
+
+void draw_candidates(cv::Mat& bgr, std::span<const CandidatePoint> points) {
+  for (const CandidatePoint& c : points) {
+    const cv::Scalar colour = c.direction == ScanDirection::kVertical ? cv::Scalar{255, 0, 255} : cv::Scalar{255, 255, 0};
+    cv::circle(bgr, {static_cast<int>(c.pixel.u), static_cast<int>(c.pixel.v)}, 1, colour, cv::FILLED);
+  }
 }
 
 void draw_result(cv::Mat& bgr, const VisionResult& r, const hal::CameraIntrinsics& k, const hal::CameraPose& pose) {

@@ -122,6 +122,9 @@ struct TimeStats {
 [[nodiscard]] int run_tool(CLI::App& app, int argc, char** argv, std::string_view name,
                            const std::function<int()>& body);
 
+/// Draws the scan lines' candidate points (vertical scans magenta, horizontal cyan) over `bgr`.
+void draw_candidates(cv::Mat& bgr, std::span<const CandidatePoint> points);
+
 /// Draws lines (green, numbered), the centre circle's points and the ball (orange) over `bgr`.
 void draw_result(cv::Mat& bgr, const VisionResult& result, const hal::CameraIntrinsics& k, const hal::CameraPose& pose);
 
