@@ -103,8 +103,9 @@ TEST_F(VisionCli, OverlayIsWrittenAtTheImageSize) {
   EXPECT_EQ(drawn.rows, 480);
 }
 
-// --candidates draws the scan lines' points (magenta and cyan) over the overlay, and the JSON gives
-// the local field luminance per colour cell: what a person needs to see why a line was missed.
+// --candidates lists the scan lines' points in the JSON and draws them (magenta and cyan) over the
+// overlay; the JSON also gives the local field luminance per colour cell: what a person needs to
+// see why a line was missed.
 TEST_F(VisionCli, CandidatesAndCellLuminanceShowWhatTheScanSaw) {
   const auto marked = [](const cv::Mat& m) {
     int n = 0;
@@ -122,6 +123,11 @@ TEST_F(VisionCli, CandidatesAndCellLuminanceShowWhatTheScanSaw) {
   ASSERT_EQ(b.rc, 0) << b.out;
   const nlohmann::json j = nlohmann::json::parse(b.out);
   ASSERT_GT(j.at("candidates").get<int>(), 20);
+  ASSERT_EQ(j.at("candidate_points").size(), j.at("candidates").get<std::size_t>());
+  for (const auto& p : j.at("candidate_points")) {
+    EXPECT_GE(p.at(1).get<double>(), j.at("horizon_row").get<double>()) << "every candidate lies below the horizon";
+  }
+  EXPECT_FALSE(nlohmann::json::parse(a.out).contains("candidate_points")) << "listed only when asked for";
   EXPECT_GT(marked(cv::imread(points.string())), marked(cv::imread(plain.string())) + j.at("candidates").get<int>());
   const nlohmann::json& cells = j.at("field_colour").at("cell_y");
   ASSERT_EQ(cells.size(), 8U);

@@ -99,6 +99,11 @@ int run(const Options& o) {
   out["time_ms"]["wall"] = static_cast<double>(wall.back().count()) / 1e6;
   out["time_clock"] = "stages and total: this thread's CPU time; wall: the monotonic clock";
   if (!image.warnings.empty()) out["warnings"] = image.warnings;
+  if (o.draw_candidates) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const CandidatePoint& c : pipeline.candidates().points()) points.push_back({c.pixel.u, c.pixel.v});
+    out["candidate_points"] = points;
+  }
   if (o.repeat > 1) {
     const tools::TimeStats total = tools::time_stats(cpu);
     const tools::TimeStats wall_stats = tools::time_stats(wall);
@@ -144,8 +149,9 @@ int main(int argc, char** argv) {
                                  "default thresholds");
   app.add_option("--overlay", o.overlay, "also write the picture with the detections drawn over it (PNG or JPEG)");
   app.add_flag("--candidates", o.draw_candidates,
-               "with --overlay: also draw the line candidates the scan lines found (vertical scans magenta, "
-               "horizontal cyan): where lines are missed, this shows whether the scan or RANSAC lost them");
+               "list the line candidates the scan lines found in the JSON (candidate_points, pixels) and, with "
+               "--overlay, draw them (vertical scans magenta, horizontal cyan): where lines are missed, this shows "
+               "whether the colour and scan or RANSAC lost them");
   app.add_option("--classes", o.classes, "also write the picture with the colour classes drawn over it (field "
                                          "green, line white, ball orange, other dark; PNG or JPEG)");
   app.add_option("--seed", o.seed, "RANSAC seed (the frame's stream is derived from it)")->capture_default_str();
