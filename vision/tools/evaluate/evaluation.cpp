@@ -281,6 +281,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
       const std::size_t arcs = count_arc_false_positives(found, f.meta.lines, rings, o.match);
       d.arc_false_positives += arcs;
       d.frames_with_arc_false_positives += arcs > 0 ? 1U : 0U;
+      d.per_frame_arcs.push_back(arcs);
     };
     count_arcs(report.ringlet, segments);
 

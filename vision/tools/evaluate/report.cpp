@@ -58,6 +58,7 @@ nlohmann::json detector_json(const DetectorReport& d) {
           {"mean_extent_error_px", c.mean_extent_error_px()},
           {"arc_false_positives", d.arc_false_positives},
           {"frames_with_arc_false_positives", d.frames_with_arc_false_positives},
+          {"per_frame_arc_pieces", d.per_frame_arcs},
           {"time_ms", {{"median", d.median_ms()}, {"p99", d.p99_ms()}, {"mean", d.mean_ms()}, {"per_frame", d.time_ms}}}};
 }
 
