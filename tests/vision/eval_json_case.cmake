@@ -79,6 +79,12 @@ foreach(e "balls;distance_error" "robots;foot_distance_error")
     message(FATAL_ERROR "${e}: mean ${mean}, max ${max}")
   endif()
 endforeach()
+# Every recalled robot is listed with its errors.
+string(JSON listed LENGTH "${text}" robot_matches)
+string(JSON recalled GET "${text}" robots recalled)
+if(NOT listed EQUAL recalled)
+  message(FATAL_ERROR "robot_matches lists ${listed} robots, ${recalled} were recalled")
+endif()
 # Every reported ball is one of the detector's candidates, so the candidates recall at least as
 # many expected balls as the reported balls do, of the same expected ones.
 string(JSON proposed GET "${text}" ball_proposals recalled)

@@ -94,6 +94,21 @@ TEST(RobotScore, BoxOverlapMatchesAndFarRobotsAreDontCare) {
   EXPECT_DOUBLE_EQ(c.recall(), 1.0);
 }
 
+// Each matched expected robot is recorded with its distances, the foot's offset and how it matched:
+// the evaluation lists them so the largest errors can be looked at.
+TEST(RobotScore, MatchesAreRecordedWithHowTheyMatched) {
+  const std::vector<TruthRobot> truth{robot(320, 400, 60, 120, 2.0), robot(100, 300, 20, 40, 3.5)};
+  std::vector<RobotMatch> matches;
+  const ObjectCounts c = score_robots(std::vector<FoundRobot>{{290, 316, 60, 120, 320, 436, 2.5}, {90, 260, 20, 40, 100, 300, 3.4}},
+                                      truth, 640, 480, {}, &matches);
+  EXPECT_EQ(c.true_positives, 2U);
+  ASSERT_EQ(matches.size(), 1U) << "the robot beyond 3 m matches but is not expected: not recorded";
+  EXPECT_DOUBLE_EQ(matches[0].true_distance_m, 2.0);
+  EXPECT_DOUBLE_EQ(matches[0].found_distance_m, 2.5);
+  EXPECT_NEAR(matches[0].foot_offset_px, 36.0, 1e-9);
+  EXPECT_FALSE(matches[0].by_foot) << "36 px is beyond half the box width: matched by overlap";
+}
+
 TEST(ObjectCounts, SumsAndKeepsTheMaximum) {
   ObjectCounts a, b;
   a.detections = 2;

@@ -265,8 +265,10 @@ EvalReport run_evaluation(const EvalOptions& o) {
         const RobotDetection& d = result.robots.robots[r];
         robots.push_back({d.left, d.top, d.width, d.height, d.foot.u, d.foot.v, d.distance_m});
       }
+      std::vector<RobotMatch> matched;
       report.robots += score_robots(robots, f.meta.robots, f.meta.intrinsics.width, f.meta.intrinsics.height,
-                                    o.robot_match);
+                                    o.robot_match, &matched);
+      for (const RobotMatch& m : matched) report.robot_matches.push_back({test[i].filename().string(), m});
       std::vector<FoundRobot> robot_proposals;
       if (result.robots.candidates > 0) {
         for (const RobotCandidate& c : pipeline->robot_candidates()) {

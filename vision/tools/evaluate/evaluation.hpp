@@ -98,6 +98,11 @@ struct EvalReport {
                                      // its recall is the share of expected balls proposed at all
   ObjectCounts robots{};
   ObjectCounts robot_proposals{};    // every robot candidate scored as a detection (the same for robots)
+  struct RobotMatchInFrame {
+    std::string frame;  // the test frame's JSON file name
+    RobotMatch match;
+  };
+  std::vector<RobotMatchInFrame> robot_matches;  // every matched expected robot: where the errors come from
   BallMatchParams ball_match{};
   RobotMatchParams robot_match{};
   /// Hough's median time / Ringlet's: > 1 means Ringlet is faster.

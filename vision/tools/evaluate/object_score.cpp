@@ -102,7 +102,7 @@ ObjectCounts score_balls(std::span<const FoundBall> found, std::span<const Truth
 }
 
 ObjectCounts score_robots(std::span<const FoundRobot> found, std::span<const TruthRobot> truth, int width, int height,
-                          const RobotMatchParams& p) {
+                          const RobotMatchParams& p, std::vector<RobotMatch>* matches) {
   ObjectCounts c;
   c.detections = found.size();
   const auto expected = [&](const TruthRobot& t) {
@@ -129,6 +129,11 @@ ObjectCounts score_robots(std::span<const FoundRobot> found, std::span<const Tru
     if (!expected(truth[m.truth])) continue;
     ++c.recalled;
     add_error(c, found[m.found].distance_m, truth[m.truth].distance_m);
+    if (matches != nullptr) {
+      const TruthRobot& t = truth[m.truth];
+      const double tolerance = std::max(p.foot_share * (t.has_box ? t.u1 - t.u0 : 0.0), p.min_foot_px);
+      matches->push_back({t.distance_m, found[m.found].distance_m, m.image_distance, m.image_distance <= tolerance});
+    }
   }
   return c;
 }

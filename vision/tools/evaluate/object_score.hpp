@@ -21,6 +21,7 @@
 //   detection has a ground point.
 #include <cstddef>
 #include <span>
+#include <vector>
 
 #include "ringlet/hal/camera_geometry.hpp"
 
@@ -90,11 +91,21 @@ struct ObjectCounts {
   [[nodiscard]] double mean_error() const noexcept;
 };
 
+/// A matched, expected robot: where its distance error comes from.
+struct RobotMatch {
+  double true_distance_m = 0.0;
+  double found_distance_m = 0.0;
+  double foot_offset_px = 0.0;  // found foot point to the true one (px; huge when the truth's does not project)
+  bool by_foot = false;         // matched by its foot point (else by box overlap alone)
+};
+
 /// One frame's balls.
 [[nodiscard]] ObjectCounts score_balls(std::span<const FoundBall> found, std::span<const TruthBall> truth,
                                        const BallMatchParams& params = {});
 /// One frame's robots; the image is width × height (an expected robot's foot lies inside it).
+/// `matches`, if given, receives one record per matched expected robot.
 [[nodiscard]] ObjectCounts score_robots(std::span<const FoundRobot> found, std::span<const TruthRobot> truth,
-                                        int width, int height, const RobotMatchParams& params = {});
+                                        int width, int height, const RobotMatchParams& params = {},
+                                        std::vector<RobotMatch>* matches = nullptr);
 
 }  // namespace ringlet::vision::evaluate

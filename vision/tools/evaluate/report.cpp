@@ -30,6 +30,20 @@ std::string xml_escape(const std::string& text) {
   return out;
 }
 
+// Every matched expected robot, worst distance error first: which robots make the maximum.
+nlohmann::json robot_matches_json(std::vector<EvalReport::RobotMatchInFrame> matches) {
+  const auto error = [](const RobotMatch& m) { return std::abs(m.found_distance_m - m.true_distance_m) / m.true_distance_m; };
+  std::stable_sort(matches.begin(), matches.end(),
+                   [&](const auto& a, const auto& b) { return error(a.match) > error(b.match); });
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& [frame, m] : matches) {
+    out.push_back({{"frame", frame}, {"true_distance_m", m.true_distance_m}, {"found_distance_m", m.found_distance_m},
+                   {"relative_error", error(m)}, {"foot_offset_px", m.foot_offset_px},
+                   {"matched_by", m.by_foot ? "foot point" : "box overlap"}});
+  }
+  return out;
+}
+
 nlohmann::json detector_json(const DetectorReport& d) {
   const MatchCounts& c = d.counts;
   // Per test frame, in the order of "test_frames": [truths, recalled, detections, true positives].
@@ -193,6 +207,7 @@ nlohmann::json report_json(const EvalReport& r) {
           {"ball_proposals", {{"expected", r.ball_proposals.expected}, {"recalled", r.ball_proposals.recalled},
                               {"recall", r.ball_proposals.recall()}, {"candidates", r.ball_proposals.detections}}},
           {"robots", object_json(r.robots, "foot_distance_error")},
+          {"robot_matches", robot_matches_json(r.robot_matches)},
           {"robot_proposals", {{"expected", r.robot_proposals.expected}, {"recalled", r.robot_proposals.recalled},
                                {"recall", r.robot_proposals.recall()}, {"candidates", r.robot_proposals.detections}}},
           {"ball_match", {{"centre_share", r.ball_match.centre_share}, {"min_centre_px", r.ball_match.min_centre_px},
