@@ -292,6 +292,34 @@ TEST(Robots, ABallBeforeTheFeetIsNotTheFoot) {
   }
 }
 
+// A near robot whose feet are below the image's bottom edge, with a shaded part of its shins
+// passing for field a little above the edge. Its columns' run reaches the edge: the feet are at
+// the edge or beyond, so the last row is the foot (the distance an upper bound), not the shaded
+// gap, which had put near robots' feet 40-80 px too high on rendered frames.
+TEST(Robots, FeetBelowTheImageEdgeAreAtTheEdgeNotAtAShadedGap) {
+  Camera cam;
+  const hal::CameraPose pose = cam.pose();
+  RobotDetector d(RobotParams{});
+  const int w = cam.k.width, rows = cam.k.height;
+  const auto edge = hal::pixel_to_ground(cam.k, pose, {w / 2.0, rows - 0.5});
+  ASSERT_TRUE(edge.has_value());
+  const double h = d.expected_height_px(cam.k, pose, *edge);
+  std::vector<std::uint8_t> img(static_cast<std::size_t>(w * rows), 100);
+  const auto paint = [&](int top, int bottom, std::uint8_t value) {
+    for (int y = std::max(0, top); y < std::min(bottom, rows); ++y)
+      for (int x = static_cast<int>(w / 2.0 - 0.25 * h); x < static_cast<int>(w / 2.0 + 0.25 * h); ++x)
+        img[static_cast<std::size_t>(y * w + x)] = value;
+  };
+  paint(static_cast<int>(rows - 0.9 * h), rows, 230);
+  const int gap_top = static_cast<int>(rows - 0.2 * h), gap_bottom = static_cast<int>(rows - 0.12 * h);
+  paint(gap_top, gap_bottom, 100);  // the shaded shins: 0.08 h of field, then 0.12 h of legs to the edge
+  RobotList out;
+  ASSERT_TRUE(detect_on_grey(cam, img, d, out));
+  ASSERT_GE(out.count, 1U);
+  EXPECT_GT(out.robots[0].foot.v, rows - 4.0) << "the foot at the edge, not at the gap (row " << gap_top << ")";
+  EXPECT_LE(out.robots[0].distance_m, std::hypot(edge->x, edge->y) + RobotParams{}.foot_depth_m + 0.05);
+}
+
 TEST(Robots, ARobotJustBehindAnotherIsFoundToo) {
   // The second robot stands 0.7 m farther, mostly hidden: only 0.15 of the first robot's height
   // (of its image) shows beside it, on the right. Its columns end higher up, right beside the

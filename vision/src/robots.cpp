@@ -131,8 +131,12 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
       if (y < h && y - field_since < std::max(2 * s, static_cast<int>(params_.max_gap_share * run_eh))) continue;
       // What followed the last bridged gap must be longer than twice the gap to belong to the
       // robot (its legs below a shaded part); shorter, it lies before the feet (the ball).
-      int foot = field_since;
-      if (gap_at >= 0 && field_since - gap_end < 2 * (gap_end - gap_at)) {
+      // A run that reaches the image's bottom edge has its feet at the edge or below it: the
+      // last row is its foot (the distance an upper bound). Its last bridged gap is a shaded
+      // part of the legs, not the feet: taking it put near robots' feet 40-80 px too high.
+      const bool feet_out_of_view = field_since >= h;
+      int foot = feet_out_of_view ? h - 1 : field_since;
+      if (!feet_out_of_view && gap_at >= 0 && field_since - gap_end < 2 * (gap_end - gap_at)) {
         foot = gap_at;
         run_eh = height_at(x + 0.5 * s, foot);
       }
