@@ -28,6 +28,12 @@ double percentile(std::vector<double> values, double p) {
   return values[i];
 }
 
+std::size_t DetectorReport::arc_false_positives() const {
+  return std::accumulate(per_frame_arcs.begin(), per_frame_arcs.end(), std::size_t{0});
+}
+std::size_t DetectorReport::frames_with_arc_false_positives() const {
+  return static_cast<std::size_t>(std::count_if(per_frame_arcs.begin(), per_frame_arcs.end(), [](std::size_t n) { return n > 0; }));
+}
 double DetectorReport::median_ms() const { return percentile(time_ms, 50.0); }
 double DetectorReport::p99_ms() const { return percentile(time_ms, 99.0); }
 double DetectorReport::mean_ms() const {
@@ -280,10 +286,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
                                              f.meta.intrinsics.height, o.robot_match);
     }
     const auto count_arcs = [&](DetectorReport& d, const std::vector<Segment2>& found) {
-      const std::size_t arcs = count_arc_false_positives(found, f.meta.lines, rings, o.match);
-      d.arc_false_positives += arcs;
-      d.frames_with_arc_false_positives += arcs > 0 ? 1U : 0U;
-      d.per_frame_arcs.push_back(arcs);
+      d.per_frame_arcs.push_back(count_arc_false_positives(found, f.meta.lines, rings, o.match));
     };
     count_arcs(report.ringlet, segments);
 

@@ -51,15 +51,16 @@ struct DetectorReport {
   std::string name;
   MatchCounts counts{};
   std::size_t raw_detections = 0;   // every segment reported, scored or not
-  std::size_t arc_false_positives = 0;  // of the scored false positives: pieces of the centre circle
-  std::size_t frames_with_arc_false_positives = 0;
-  std::vector<std::size_t> per_frame_arcs;  // arc pieces taken for lines, per test frame
+  // Of the scored false positives, the pieces of the centre circle, per test frame.
+  std::vector<std::size_t> per_frame_arcs;
   std::vector<double> time_ms;      // per frame
   std::vector<MatchCounts> per_frame;  // line counts per test frame (which frames fail)
   std::vector<std::vector<Segment2>> segments;  // what was reported, per test frame
   [[nodiscard]] double median_ms() const;
   [[nodiscard]] double p99_ms() const;
   [[nodiscard]] double mean_ms() const;
+  [[nodiscard]] std::size_t arc_false_positives() const;              // their sum
+  [[nodiscard]] std::size_t frames_with_arc_false_positives() const;  // frames with any
 };
 
 struct TuningResult {

@@ -56,9 +56,11 @@ std::vector<Pair> assign(std::vector<Pair> pairs, std::size_t n_found, std::size
   return out;
 }
 
+double relative_error(double detected, double truth) { return std::abs(detected - truth) / truth; }
+
 void add_error(ObjectCounts& c, double detected, double truth) {
   if (!(truth > 0.0)) return;
-  const double e = std::abs(detected - truth) / truth;
+  const double e = relative_error(detected, truth);
   ++c.errors;
   c.error_sum += e;
   c.error_max = std::max(c.error_max, e);
@@ -110,6 +112,9 @@ ObjectCounts score_robots(std::span<const FoundRobot> found, std::span<const Tru
            t.visible_fraction >= p.min_visible && t.foot_u >= 0.0 && t.foot_u < width && t.foot_v >= 0.0 &&
            t.foot_v < height;
   };
+  const auto foot_tolerance = [&](const TruthRobot& t) {
+    return std::max(p.foot_share * (t.has_box ? t.u1 - t.u0 : 0.0), p.min_foot_px);
+  };
   std::vector<Pair> pairs;
   for (std::size_t i = 0; i < found.size(); ++i) {
     for (std::size_t j = 0; j < truth.size(); ++j) {
@@ -117,8 +122,7 @@ ObjectCounts score_robots(std::span<const FoundRobot> found, std::span<const Tru
       if (!t.in_front || !t.visible) continue;
       const double d =
           t.foot_projects ? std::hypot(found[i].foot_u - t.foot_u, found[i].foot_v - t.foot_v) : std::numeric_limits<double>::infinity();
-      const double tolerance = std::max(p.foot_share * (t.has_box ? t.u1 - t.u0 : 0.0), p.min_foot_px);
-      if (d <= tolerance || (t.has_box && iou(found[i], t) >= p.min_iou)) {
+      if (d <= foot_tolerance(t) || (t.has_box && iou(found[i], t) >= p.min_iou)) {
         pairs.push_back({std::isfinite(d) ? d : 1e9, i, j});
       }
     }
@@ -131,8 +135,8 @@ ObjectCounts score_robots(std::span<const FoundRobot> found, std::span<const Tru
     add_error(c, found[m.found].distance_m, truth[m.truth].distance_m);
     if (matches != nullptr) {
       const TruthRobot& t = truth[m.truth];
-      const double tolerance = std::max(p.foot_share * (t.has_box ? t.u1 - t.u0 : 0.0), p.min_foot_px);
-      matches->push_back({t.distance_m, found[m.found].distance_m, m.image_distance, m.image_distance <= tolerance});
+      matches->push_back({t.distance_m, found[m.found].distance_m, relative_error(found[m.found].distance_m, t.distance_m),
+                          m.image_distance, m.image_distance <= foot_tolerance(t)});
     }
   }
   return c;

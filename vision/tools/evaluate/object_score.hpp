@@ -95,6 +95,7 @@ struct ObjectCounts {
 struct RobotMatch {
   double true_distance_m = 0.0;
   double found_distance_m = 0.0;
+  double relative_error = 0.0;  // |found − true| / true, as the mean and max are taken
   double foot_offset_px = 0.0;  // found foot point to the true one (px; huge when the truth's does not project)
   bool by_foot = false;         // matched by its foot point (else by box overlap alone)
 };

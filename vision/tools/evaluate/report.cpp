@@ -32,13 +32,12 @@ std::string xml_escape(const std::string& text) {
 
 // Every matched expected robot, worst distance error first: which robots make the maximum.
 nlohmann::json robot_matches_json(std::vector<EvalReport::RobotMatchInFrame> matches) {
-  const auto error = [](const RobotMatch& m) { return std::abs(m.found_distance_m - m.true_distance_m) / m.true_distance_m; };
   std::stable_sort(matches.begin(), matches.end(),
-                   [&](const auto& a, const auto& b) { return error(a.match) > error(b.match); });
+                   [](const auto& a, const auto& b) { return a.match.relative_error > b.match.relative_error; });
   nlohmann::json out = nlohmann::json::array();
   for (const auto& [frame, m] : matches) {
     out.push_back({{"frame", frame}, {"true_distance_m", m.true_distance_m}, {"found_distance_m", m.found_distance_m},
-                   {"relative_error", error(m)}, {"foot_offset_px", m.foot_offset_px},
+                   {"relative_error", m.relative_error}, {"foot_offset_px", m.foot_offset_px},
                    {"matched_by", m.by_foot ? "foot point" : "box overlap"}});
   }
   return out;
@@ -70,8 +69,8 @@ nlohmann::json detector_json(const DetectorReport& d) {
           {"mean_angle_error_deg", c.mean_angle_error_deg()},
           {"mean_endpoint_error_px", c.mean_endpoint_error_px()},
           {"mean_extent_error_px", c.mean_extent_error_px()},
-          {"arc_false_positives", d.arc_false_positives},
-          {"frames_with_arc_false_positives", d.frames_with_arc_false_positives},
+          {"arc_false_positives", d.arc_false_positives()},
+          {"frames_with_arc_false_positives", d.frames_with_arc_false_positives()},
           {"per_frame_arc_pieces", d.per_frame_arcs},
           {"time_ms", {{"median", d.median_ms()}, {"p99", d.p99_ms()}, {"mean", d.mean_ms()}, {"per_frame", d.time_ms}}}};
 }
@@ -157,10 +156,10 @@ void print_report(const EvalReport& r, std::ostream& os) {
   row("mean extent error (px)", fmt("%.1f", a.mean_extent_error_px()), fmt("%.1f", b.mean_extent_error_px()));
   row("time/frame median (ms)", fmt("%.3f", r.ringlet.median_ms()), fmt("%.3f", r.baseline.median_ms()));
   row("time/frame p99 (ms)", fmt("%.3f", r.ringlet.p99_ms()), fmt("%.3f", r.baseline.p99_ms()));
-  row("arc pieces taken for lines", std::to_string(r.ringlet.arc_false_positives),
-      std::to_string(r.baseline.arc_false_positives));
-  row("  frames with any", std::to_string(r.ringlet.frames_with_arc_false_positives),
-      std::to_string(r.baseline.frames_with_arc_false_positives));
+  row("arc pieces taken for lines", std::to_string(r.ringlet.arc_false_positives()),
+      std::to_string(r.baseline.arc_false_positives()));
+  row("  frames with any", std::to_string(r.ringlet.frames_with_arc_false_positives()),
+      std::to_string(r.baseline.frames_with_arc_false_positives()));
   os << "speed ratio (Hough median / Ringlet median): " << fmt("%.2f", r.speed_ratio()) << "x\n";
   const CircleCounts& c = r.circle;
   os << "\ncentre circle (Ringlet): a match is a centre within " << r.circle_match.max_centre_error_m
