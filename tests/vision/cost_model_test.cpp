@@ -109,9 +109,13 @@ TEST(VisionCost, HogClassificationsAreCountedAndDegradingDropsTheirCost) {
   const CostModel m = default_cost_model();
   // Without a robot model the robot stage does not run at all, so its scan is in the difference too.
   EXPECT_EQ(unverified.robot_samples, 0);
+  // The marks' search examines what the lines and the verified balls leave over, so its point
+  // tests change with the classifications too.
   const hal::Nanos windows{std::llround(m.board_slowdown * (m.per_ball_window_ns * static_cast<double>(verified.ball_windows) +
                                                             m.per_robot_window_ns * static_cast<double>(verified.robot_windows) +
-                                                            m.per_robot_sample_ns * static_cast<double>(verified.robot_samples)))};
+                                                            m.per_robot_sample_ns * static_cast<double>(verified.robot_samples) +
+                                                            m.per_point_test_ns * static_cast<double>(verified.point_tests -
+                                                                                                      unverified.point_tests)))};
   EXPECT_NEAR(static_cast<double>((modelled_cost(verified) - modelled_cost(unverified)).count()),
               static_cast<double>(windows.count()), 2.0)
       << "the same frame, the classifications (and the robot stage they need) the only difference";

@@ -1,5 +1,5 @@
 # ringlet-vision-eval's JSON: both detectors, each with precision, recall and F1 in [0, 1], a
-# positive median time and a count of arc pieces taken for lines; the centre circle's scores. Run as: cmake -DJSON=<file> -P eval_json_case.cmake
+# positive median time and a count of arc pieces taken for lines; the centre circle's and the marks' scores. Run as: cmake -DJSON=<file> -P eval_json_case.cmake
 file(READ ${JSON} text)
 foreach(d ringlet hough)
   foreach(m precision recall f1)
@@ -35,18 +35,26 @@ foreach(d ringlet hough)
   endif()
   message(STATUS "${d}: F1 ${v}, median ${t} ms, ${arcs} arc pieces taken for lines")
 endforeach()
-# The centre circle, scored on its own: precision, recall and F1 in [0, 1], as many right as
-# recalled at most as many as scored.
-foreach(m precision recall f1)
-  string(JSON v GET "${text}" circle ${m})
-  if(v LESS 0 OR v GREATER 1)
-    message(FATAL_ERROR "circle ${m} = ${v}, not in [0, 1]")
+# The centre circle and the penalty and centre marks, each scored on its own: precision, recall
+# and F1 in [0, 1], at most as many right as scored and as recalled as expected.
+foreach(landmark circle marks)
+  foreach(m precision recall f1)
+    string(JSON v GET "${text}" ${landmark} ${m})
+    if(v LESS 0 OR v GREATER 1)
+      message(FATAL_ERROR "${landmark} ${m} = ${v}, not in [0, 1]")
+    endif()
+  endforeach()
+  string(JSON right GET "${text}" ${landmark} true_positives)
+  string(JSON scored GET "${text}" ${landmark} detections_scored)
+  string(JSON recalled GET "${text}" ${landmark} recalled)
+  string(JSON expected GET "${text}" ${landmark} expected)
+  if(right GREATER scored OR recalled GREATER expected)
+    message(FATAL_ERROR "${landmark}: ${right} right of ${scored} scored, ${recalled} of ${expected} expected recalled")
   endif()
 endforeach()
-string(JSON right GET "${text}" circle true_positives)
-string(JSON scored GET "${text}" circle detections_scored)
-if(right GREATER scored)
-  message(FATAL_ERROR "circle: ${right} right of ${scored} scored")
+string(JSON bars GET "${text}" marks bars_scored_as_lines)
+if(NOT bars)
+  message(FATAL_ERROR "marks: the bars are not said to be scored as lines")
 endif()
 string(JSON tuned LENGTH "${text}" hough_tuning)
 if(tuned LESS 2)

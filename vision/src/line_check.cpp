@@ -8,16 +8,6 @@
 
 namespace ringlet::vision {
 
-ColourClass LineCheck::class_at(double x, double y) const noexcept {
-  const int s = classes_.step();
-  const int xi = static_cast<int>(std::floor(x));
-  const int yi = static_cast<int>(std::floor(y));
-  if (xi < 0 || xi >= classes_.width() || yi < classes_.first_row() || yi >= classes_.height()) return ColourClass::kOther;
-  const int gx = xi / s * s;
-  const int gy = classes_.first_row() + (yi - classes_.first_row()) / s * s;
-  return classes_.at(gx, gy);
-}
-
 bool LineCheck::looks_like_line(double cx, double cy, double nx, double ny, double h) const noexcept {
   // The paint: a line pixel within half the band plus the slack of the fit.
   const int reach = static_cast<int>(std::ceil(h + params_.centre_slack_px));
@@ -25,7 +15,7 @@ bool LineCheck::looks_like_line(double cx, double cy, double nx, double ny, doub
   bool on_paint = false;
   for (int d = 0; d <= reach && !on_paint; ++d) {
     for (const int sign : {1, -1}) {
-      if (class_at(cx + sign * d * nx, cy + sign * d * ny) == ColourClass::kLine) {
+      if (classes_.class_near(cx + sign * d * nx, cy + sign * d * ny) == ColourClass::kLine) {
         centre = sign * d;
         on_paint = true;
         break;
@@ -39,14 +29,14 @@ bool LineCheck::looks_like_line(double cx, double cy, double nx, double ny, doub
   for (const int sign : {1, -1}) {
     int d = centre;
     int steps = 0;
-    while (steps <= band && class_at(cx + d * nx, cy + d * ny) == ColourClass::kLine) {
+    while (steps <= band && classes_.class_near(cx + d * nx, cy + d * ny) == ColourClass::kLine) {
       d += sign;
       ++steps;
     }
     if (steps > band) return false;  // too wide for paint: a robot, a post, a white wall
     bool field = false;
     for (int e = 0; e <= params_.edge_px; ++e, d += sign) {
-      const ColourClass c = class_at(cx + d * nx, cy + d * ny);
+      const ColourClass c = classes_.class_near(cx + d * nx, cy + d * ny);
       if (c == ColourClass::kField) {
         field = true;
         break;

@@ -18,6 +18,7 @@ VisionPipeline::VisionPipeline(const VisionConfig& config, ColourTable table)
       candidates_(config.max_candidates),
       ransac_(config.ransac, config.max_candidates),
       circle_(config.ransac.circle, config.max_candidates),
+      marks_(config.marks, config.max_candidates),
       ball_(config.ball, config.intrinsics.width, config.intrinsics.height),
       bw_ball_(config.bw_ball),
       robots_(config.robot) {}
@@ -157,6 +158,12 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     r.cut.lines_not_extracted = lines.stats.stopped_early;
     r.cut.points_left = lines.stats.points_left;
     if (lines.stats.stopped_early) r.cut.deadline_hit = true;
+    // The crosses from what the lines, the circle and the balls leave over (bounded, no trials).
+    marks_.find(candidates_.points(), std::span<const FieldLine>(r.lines.data(), r.line_count), r.circle,
+                std::span<const BallDetection>(r.balls.balls.data(), r.balls.count), classes_, k, pose, deadline,
+                r.marks);
+    r.work.point_tests += r.marks.tests;
+    if (r.marks.stopped_early) r.cut.deadline_hit = true;
     lap(Stage::kRansac);
   }
   if (!classified) {  // later stages depend on the classes

@@ -248,6 +248,16 @@ nlohmann::json result_json(const VisionResult& r) {
                      {"coverage_deg", r.circle.coverage_deg},
                      {"rms_m", r.circle.rms_m}};
   }
+  out["marks"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < r.marks.count; ++i) {
+    const FieldMark& m = r.marks.marks[i];
+    out["marks"].push_back({{"centre", {m.centre.x, m.centre.y}},
+                            {"distance_m", m.distance_m},
+                            {"bearing_rad", m.bearing_rad},
+                            {"orientation_rad", m.orientation_rad},
+                            {"confidence", m.confidence},
+                            {"points", m.points}});
+  }
   if (r.ball.seen) {
     out["ball"] = {{"seen", true},
                    {"image", {r.ball.centre.u, r.ball.centre.v}},
@@ -333,6 +343,14 @@ void draw_result(cv::Mat& bgr, const VisionResult& r, const hal::CameraIntrinsic
       const auto px = hal::project(k, pose, {r.circle.centre.x + r.circle.radius_m * std::cos(t),
                                              r.circle.centre.y + r.circle.radius_m * std::sin(t), 0.0});
       if (px) cv::circle(bgr, pt(*px), 2, {255, 0, 255}, cv::FILLED);
+    }
+  }
+  // The crosses (penalty and centre marks): their two bars, yellow.
+  for (std::size_t i = 0; i < r.marks.count; ++i) {
+    for (const auto& bar : FieldMarkFinder::bars(r.marks.marks[i])) {
+      const auto a = hal::project(k, pose, {bar[0].x, bar[0].y, 0.0});
+      const auto b = hal::project(k, pose, {bar[1].x, bar[1].y, 0.0});
+      if (a && b) cv::line(bgr, pt(*a), pt(*b), {0, 255, 255}, 2);
     }
   }
   // Every ball (orange: one); an unverified candidate thinner.

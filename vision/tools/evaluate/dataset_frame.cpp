@@ -67,6 +67,11 @@ DatasetFrame load_dataset_frame(const fs::path& json_path) {
     f.mount = {m.at("pivot_height").get<double>(), m.at("forward").get<double>(), m.at("up").get<double>()};
     f.head = {j.at("head").at("yaw").get<double>(), j.at("head").at("pitch").get<double>()};
     const hal::CameraPose pose = hal::CameraPose::from_head(f.mount, f.head);
+    // The crosses' bars: short markings, grouped by their world centre, placed with the frame's pose
+    // (the simulator's convention, hal::to_robot_frame).
+    std::vector<hal::RobotPoint> mark_world;
+    const auto& robot = j.value("pose", nlohmann::json::object());
+    const double rx = robot.value("x", 0.0), ry = robot.value("y", 0.0), rt = robot.value("theta", 0.0);
     for (const auto& line : j.at("lines")) {
       const auto& img = line.at("image");
       const auto& ground = line.at("ground");
@@ -85,6 +90,22 @@ DatasetFrame load_dataset_frame(const fs::path& json_path) {
                                    projected_half_width(f.intrinsics, pose, b, dx, dy, width));
       }
       f.lines.push_back(t);
+      if (line.contains("world")) {
+        const auto& w = line.at("world");
+        const hal::RobotPoint wa{w.at(0).at(0).get<double>(), w.at(0).at(1).get<double>()};
+        const hal::RobotPoint wb{w.at(1).at(0).get<double>(), w.at(1).at(1).get<double>()};
+        if (std::hypot(wb.x - wa.x, wb.y - wa.y) <= kCrossBarMaxM) {
+          const hal::RobotPoint wc{(wa.x + wb.x) / 2.0, (wa.y + wb.y) / 2.0};
+          const double bar_px = std::hypot(t.line.x1 - t.line.x0, t.line.y1 - t.line.y0);
+          std::size_t cross = 0;
+          while (cross < mark_world.size() && std::hypot(mark_world[cross].x - wc.x, mark_world[cross].y - wc.y) > 1e-6) ++cross;
+          if (cross == mark_world.size()) {
+            mark_world.push_back(wc);
+            f.marks.push_back({hal::to_robot_frame({rx, ry, rt}, wc.x, wc.y), 0.0});
+          }
+          f.marks[cross].longest_bar_px = std::max(f.marks[cross].longest_bar_px, bar_px);
+        }
+      }
     }
     // The rings' truth as ringlet-dataset writes it (centre already in the robot frame).
     for (const auto& ring : j.value("rings", nlohmann::json::array())) {

@@ -10,6 +10,7 @@
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/sensors.hpp"
 #include "circle_score.hpp"
+#include "mark_score.hpp"
 #include "object_score.hpp"
 #include "segment_match.hpp"
 
@@ -26,6 +27,7 @@ struct DatasetFrame {
   hal::HeadJoints head{};
   std::vector<TruthSegment> lines;
   std::vector<TruthRing> rings;   // the centre circle(s): "rings" (frames without the field: none)
+  std::vector<TruthMark> marks;   // the penalty and centre marks in view (mark_score.hpp)
   // Generator version 3 and later: every ball ("balls") and robot ("robots"); older frames: none
   // (has_objects false, and they are not scored).
   bool has_objects = false;

@@ -133,6 +133,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
   report.lut = o.lut.empty() ? "default thresholds" : o.lut.string();
   report.match = o.match;
   report.circle_match = o.circle_match;
+  report.mark_match = o.mark_match;
   report.ringlet.name = "Ringlet (LUT + scan lines + RANSAC)";
   report.baseline.name = "OpenCV Canny + HoughLinesP";
 
@@ -241,12 +242,24 @@ EvalReport run_evaluation(const EvalOptions& o) {
       const FieldLine& line = result.lines[l];
       segments.push_back({line.image_start.u, line.image_start.v, line.image_end.u, line.image_end.v});
     }
+    // A cross's bars are painted lines too (the truth lists them): scored as its two bars.
+    const hal::CameraPose mark_pose = hal::CameraPose::from_head(f.meta.mount, f.meta.head);
+    for (std::size_t m = 0; m < result.marks.count; ++m) {
+      for (const auto& bar : FieldMarkFinder::bars(result.marks.marks[m], o.vision.marks.bar_length_m)) {
+        const auto a = hal::project(f.meta.intrinsics, mark_pose, {bar[0].x, bar[0].y, 0.0});
+        const auto b = hal::project(f.meta.intrinsics, mark_pose, {bar[1].x, bar[1].y, 0.0});
+        if (a && b) segments.push_back({a->u, a->v, b->u, b->v});
+      }
+    }
     report.ringlet.raw_detections += segments.size();
     report.ringlet.per_frame.push_back(match_segments(segments, f.meta.lines, o.match));
     report.ringlet.segments.push_back(segments);
     report.ringlet.counts += report.ringlet.per_frame.back();
     report.circle += score_circle({result.circle.seen, result.circle.centre, result.circle.radius_m}, f.meta.rings,
                                   o.circle_match);
+    std::vector<hal::RobotPoint> marks;
+    for (std::size_t m = 0; m < result.marks.count; ++m) marks.push_back(result.marks.marks[m].centre);
+    report.marks += score_marks(marks, f.meta.marks, o.mark_match);
     std::vector<RingImage> rings;
     const hal::CameraPose pose = hal::CameraPose::from_head(f.meta.mount, f.meta.head);
     for (const TruthRing& ring : f.meta.rings) {

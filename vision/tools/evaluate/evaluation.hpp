@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "circle_score.hpp"
+#include "mark_score.hpp"
 #include "hough_baseline.hpp"
 #include "object_score.hpp"
 #include "ringlet/vision/pipeline.hpp"
@@ -35,6 +36,7 @@ struct EvalOptions {
   int max_frames = 0;          // 0: all (of the test set)
   MatchParams match{};
   CircleMatchParams circle_match{};
+  MarkMatchParams mark_match{};
   BallMatchParams ball_match{};
   RobotMatchParams robot_match{};
   // HOG/SVM models installed in the pipeline (empty: none; the black-and-white ball and the
@@ -85,8 +87,10 @@ struct EvalReport {
   DetectorReport ringlet;
   DetectorReport baseline;
   CircleCounts circle{};             // Ringlet's centre circle (Hough reports none)
+  CircleCounts marks{};              // Ringlet's penalty and centre marks (mark_score.hpp; no radius)
   std::size_t rings_visible = 0;     // test frames showing any of the ring
   CircleMatchParams circle_match{};
+  MarkMatchParams mark_match{};
   MatchParams match{};
   // Balls and robots (object_score.hpp), over the test frames that carry their truth (ringlet-dataset
   // generator version 3 and later).

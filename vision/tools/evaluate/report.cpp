@@ -170,10 +170,36 @@ void print_report(const EvalReport& r, std::ostream& os) {
   os << "  precision " << fmt("%.3f", c.precision()) << "  recall " << fmt("%.3f", c.recall()) << "  F1 "
      << fmt("%.3f", c.f1()) << "  mean centre error " << fmt("%.3f", c.mean_centre_error_m()) << " m  mean radius error "
      << fmt("%.3f", c.mean_radius_error_m()) << " m\n";
+  const CircleCounts& m = r.marks;
+  os << "\npenalty and centre marks (Ringlet): a match is a centre within " << r.mark_match.max_centre_error_m
+     << " m of a cross's; expected when a bar is >= " << r.mark_match.min_bar_px
+     << " px long in the picture (the bars also count as line detections above)\n";
+  os << "  expected " << m.truths << ", recalled " << m.recalled << ", detections " << m.detections << " ("
+     << m.true_positives << " right)  precision " << fmt("%.3f", m.precision()) << "  recall "
+     << fmt("%.3f", m.recall()) << "  mean centre error " << fmt("%.3f", m.mean_centre_error_m()) << " m\n";
   print_objects(r, os);
 }
 
+namespace {
+// The centre circle's and the marks' common figures (both CircleCounts).
+nlohmann::json landmark_json(const CircleCounts& c) {
+  return {{"precision", c.precision()},          {"recall", c.recall()},
+          {"f1", c.f1()},                        {"detections_scored", c.detections},
+          {"true_positives", c.true_positives},  {"expected", c.truths},
+          {"recalled", c.recalled},              {"mean_centre_error_m", c.mean_centre_error_m()}};
+}
+}  // namespace
+
 nlohmann::json report_json(const EvalReport& r) {
+  nlohmann::json circle = landmark_json(r.circle);
+  circle["frames_showing_some"] = r.rings_visible;
+  circle["mean_radius_error_m"] = r.circle.mean_radius_error_m();
+  circle["match"] = {{"max_centre_error_m", r.circle_match.max_centre_error_m},
+                     {"max_radius_error_m", r.circle_match.max_radius_error_m},
+                     {"min_visible_deg", r.circle_match.min_visible_deg}};
+  nlohmann::json marks = landmark_json(r.marks);
+  marks["bars_scored_as_lines"] = true;
+  marks["match"] = {{"max_centre_error_m", r.mark_match.max_centre_error_m}, {"min_bar_px", r.mark_match.min_bar_px}};
   nlohmann::json tuning = nlohmann::json::array();
   for (const TuningResult& t : r.tuning) {
     tuning.push_back({{"params", t.params.describe()}, {"f1", t.counts.f1()}, {"precision", t.counts.precision()},
@@ -214,20 +240,8 @@ nlohmann::json report_json(const EvalReport& r) {
           {"robot_match", {{"foot_share", r.robot_match.foot_share}, {"min_foot_px", r.robot_match.min_foot_px},
                            {"min_iou", r.robot_match.min_iou}, {"max_distance_m", r.robot_match.max_distance_m},
                            {"min_visible", r.robot_match.min_visible}}},
-          {"circle",
-           {{"precision", r.circle.precision()},
-            {"recall", r.circle.recall()},
-            {"f1", r.circle.f1()},
-            {"detections_scored", r.circle.detections},
-            {"true_positives", r.circle.true_positives},
-            {"expected", r.circle.truths},
-            {"recalled", r.circle.recalled},
-            {"frames_showing_some", r.rings_visible},
-            {"mean_centre_error_m", r.circle.mean_centre_error_m()},
-            {"mean_radius_error_m", r.circle.mean_radius_error_m()},
-            {"match", {{"max_centre_error_m", r.circle_match.max_centre_error_m},
-                       {"max_radius_error_m", r.circle_match.max_radius_error_m},
-                       {"min_visible_deg", r.circle_match.min_visible_deg}}}}}};
+          {"circle", circle},
+          {"marks", marks}};
 }
 
 std::string report_svg(const EvalReport& r) {

@@ -4,6 +4,7 @@
 // Only the part below the horizon is classified (rows from first_row on), and at sampling step
 // `step` only pixels with x % step == 0 and (y − first_row) % step == 0 are; everything else keeps
 // stale bytes and must not be read — every consumer walks the same grid (see sampled()).
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -28,6 +29,14 @@ class ClassImage {
   }
   [[nodiscard]] bool sampled(int x, int y) const noexcept {
     return y >= first_row_ && y < height_ && x >= 0 && x < width_ && x % step_ == 0 && (y - first_row_) % step_ == 0;
+  }
+  /// The class at image point (x, y), read from the sampled pixel of its step × step block;
+  /// kOther outside the classified area. For consumers that work at sub-pixel positions.
+  [[nodiscard]] ColourClass class_near(double x, double y) const noexcept {
+    const int xi = static_cast<int>(std::floor(x));
+    const int yi = static_cast<int>(std::floor(y));
+    if (xi < 0 || xi >= width_ || yi < first_row_ || yi >= height_) return ColourClass::kOther;
+    return at(xi / step_ * step_, first_row_ + (yi - first_row_) / step_ * step_);
   }
   [[nodiscard]] const std::uint8_t* row(int y) const noexcept {
     return data_.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width_);

@@ -79,8 +79,6 @@ class LineCheck {
   [[nodiscard]] Verdict assess(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept;
   // Sample i of n along [a, b]: 1 looks like paint, 0 does not, -1 not judged (outside the picture).
   [[nodiscard]] int judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, int n) const noexcept;
-  // The class at (x, y) rounded to the sampled grid; kOther outside the classified area.
-  [[nodiscard]] ColourClass class_at(double x, double y) const noexcept;
   // One sample: image point c of the centre line, unit normal (nx, ny), expected half width h.
   [[nodiscard]] bool looks_like_line(double cx, double cy, double nx, double ny, double h) const noexcept;
 

@@ -16,6 +16,7 @@
 #include "ringlet/hal/sensors.hpp"
 #include "ringlet/vision/ball.hpp"
 #include "ringlet/vision/bw_ball.hpp"
+#include "ringlet/vision/field_marks.hpp"
 #include "ringlet/vision/class_image.hpp"
 #include "ringlet/vision/colour_table.hpp"
 #include "ringlet/vision/cost_model.hpp"
@@ -51,6 +52,7 @@ struct VisionConfig {
   ScanParams scan{};
   RansacParams ransac{};
   LineCheckParams line_check{};          // every piece RANSAC fits is checked against the picture
+  FieldMarkParams marks{};               // the penalty and centre marks, from what the lines leave over
   BallParams ball{};                     // ball.mode picks the orange or the black-and-white detector
   BwBallParams bw_ball{};
   bool robots = true;                    // the robot stage (runs only with a robot model installed)
@@ -98,6 +100,7 @@ struct VisionResult {
   std::array<FieldLine, kMaxLines> lines{};
   std::size_t line_count = 0;
   CentreCircle circle{};
+  FieldMarkList marks{};        // penalty and centre marks (crosses), found in the line stage
   BallDetection ball{};         // the best ball (balls.balls[0] when balls.count > 0)
   BallList balls{};             // black and white: up to kMaxBalls; orange: the one ball
   RobotList robots{};
@@ -165,6 +168,7 @@ class VisionPipeline {
   CandidateBuffer candidates_;
   RansacLineFinder ransac_;
   CentreCircleFinder circle_;
+  FieldMarkFinder marks_;
   BallDetector ball_;
   BwBallDetector bw_ball_;
   RobotDetector robots_;
