@@ -195,6 +195,36 @@ TEST(Pipeline, DegradeLevelsDoLess) {
   }
 }
 
+// A robot's legs look like a line running away from the camera: upright pieces lying inside a
+// verified robot's box are dropped, nothing else is.
+TEST(Pipeline, UprightPiecesInsideAVerifiedRobotAreItsLegs) {
+  const auto piece = [](double u0, double v0, double u1, double v1) {
+    FieldLine f;
+    f.image_start = {u0, v0};
+    f.image_end = {u1, v1};
+    return f;
+  };
+  RobotList robots;
+  robots.count = 2;
+  robots.robots[0] = {100.0, 50.0, 60.0, 120.0, {}, {}, 0.0, 0.0, true, 1.0, 1.0};    // verified: u 100-160, v 50-170
+  robots.robots[1] = {300.0, 50.0, 60.0, 120.0, {}, {}, 0.0, 0.0, false, 0.0, 0.0};  // a candidate the SVM refused
+  std::array<FieldLine, kMaxLines> lines{};
+  lines[0] = piece(120, 80, 125, 160);   // a leg: upright, inside the verified box
+  lines[1] = piece(320, 80, 322, 160);   // upright, but the robot is not verified
+  lines[2] = piece(105, 150, 155, 140);  // across the verified box: a line seen behind the legs
+  lines[3] = piece(130, 100, 140, 240);  // upright, running out of the box
+  lines[4] = piece(150, 60, 110, 165);   // inside, but slanted 21° from the vertical
+  const std::size_t n = drop_robot_legs(lines, 5, robots, 0.35);
+  ASSERT_EQ(n, 4U);
+  EXPECT_DOUBLE_EQ(lines[0].image_start.u, 320.0) << "the others keep their order";
+  EXPECT_DOUBLE_EQ(lines[1].image_start.u, 105.0);
+  EXPECT_DOUBLE_EQ(lines[2].image_start.u, 130.0);
+  EXPECT_DOUBLE_EQ(lines[3].image_start.u, 150.0);
+  lines[0] = piece(120, 80, 125, 160);
+  EXPECT_EQ(drop_robot_legs(lines, 1, robots, -1.0), 1U) << "a negative slant turns it off";
+  EXPECT_EQ(drop_robot_legs(lines, 1, robots, 0.35), 0U);
+}
+
 TEST(Pipeline, WrongFrameSizeIsRefused) {
   VisionPipeline p = make();
   std::vector<std::uint8_t> bytes(320 * 240 * 2);

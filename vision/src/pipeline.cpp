@@ -1,11 +1,32 @@
 #include "ringlet/vision/pipeline.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "ringlet/vision/horizon.hpp"
 
 namespace ringlet::vision {
+
+std::size_t drop_robot_legs(std::span<FieldLine> lines, std::size_t count, const RobotList& robots,
+                            double max_slant) noexcept {
+  if (max_slant < 0.0) return count;
+  const auto inside = [](const hal::Pixel& p, const RobotDetection& d) {
+    return p.u >= d.left && p.u <= d.left + d.width && p.v >= d.top && p.v <= d.top + d.height;
+  };
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < count && i < lines.size(); ++i) {
+    const FieldLine& f = lines[i];
+    const bool upright = std::abs(f.image_end.u - f.image_start.u) <= max_slant * std::abs(f.image_end.v - f.image_start.v);
+    bool leg = false;
+    for (std::size_t j = 0; j < robots.count && upright && !leg; ++j) {
+      const RobotDetection& d = robots.robots[j];
+      leg = d.verified && inside(f.image_start, d) && inside(f.image_end, d);
+    }
+    if (!leg) lines[kept++] = f;
+  }
+  return kept;
+}
 
 VisionPipeline::VisionPipeline(const VisionConfig& config, ColourTable table)
     : config_(config),
@@ -158,6 +179,9 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     r.cut.lines_not_extracted = lines.stats.stopped_early;
     r.cut.points_left = lines.stats.points_left;
     if (lines.stats.stopped_early) r.cut.deadline_hit = true;
+    const std::size_t reported = r.line_count;
+    r.line_count = drop_robot_legs(r.lines, r.line_count, r.robots, config_.robot_leg_max_slant);
+    r.robot_legs_dropped = static_cast<int>(reported - r.line_count);
     // The crosses from what the lines, the circle and the balls leave over (bounded, no trials).
     marks_.find(candidates_.points(), std::span<const FieldLine>(r.lines.data(), r.line_count), r.circle,
                 std::span<const BallDetection>(r.balls.balls.data(), r.balls.count), classes_, k, pose, deadline,

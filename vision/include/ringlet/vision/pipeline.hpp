@@ -53,6 +53,10 @@ struct VisionConfig {
   RansacParams ransac{};
   LineCheckParams line_check{};          // every piece RANSAC fits is checked against the picture
   FieldMarkParams marks{};               // the penalty and centre marks, from what the lines leave over
+  // A reported piece lying inside a verified robot's box and within this slant of the image's
+  // vertical (horizontal px per vertical px: about 20°) is the robot's leg, not paint, and is
+  // dropped (drop_robot_legs); < 0: never.
+  double robot_leg_max_slant = 0.35;
   BallParams ball{};                     // ball.mode picks the orange or the black-and-white detector
   BwBallParams bw_ball{};
   bool robots = true;                    // the robot stage (runs only with a robot model installed)
@@ -99,6 +103,7 @@ struct VisionResult {
   int horizon_row = 0;  // first ground row (minimum over columns), image height when none
   std::array<FieldLine, kMaxLines> lines{};
   std::size_t line_count = 0;
+  int robot_legs_dropped = 0;   // pieces RANSAC reported that lay on verified robots (drop_robot_legs)
   CentreCircle circle{};
   FieldMarkList marks{};        // penalty and centre marks (crosses), found in the line stage
   BallDetection ball{};         // the best ball (balls.balls[0] when balls.count > 0)
@@ -115,6 +120,14 @@ struct VisionResult {
   std::array<hal::Nanos, kStageCount> stage_time{};  // by Stage; measured on the deadline's stopwatch
   hal::Nanos total_time{0};
 };
+
+/// Drops from lines[0, count) every piece whose image ends both lie inside a verified robot's
+/// box and which runs within `max_slant` (horizontal px per vertical px) of the image's vertical:
+/// a NAO's white legs on the carpet are runs with green either side, lined up like a line running
+/// away from the camera, and LineCheck sees paint there. Upright pieces only: a true line seen
+/// between or behind the legs crosses the box. Keeps the order; returns the new count.
+[[nodiscard]] std::size_t drop_robot_legs(std::span<FieldLine> lines, std::size_t count, const RobotList& robots,
+                                          double max_slant) noexcept;
 
 class VisionPipeline {
  public:
