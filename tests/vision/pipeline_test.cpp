@@ -254,6 +254,25 @@ TEST(Pipeline, MessagesHoldTheResult) {
   const auto back = wb::FieldLines::from_string(m.description());
   ASSERT_TRUE(back.has_value()) << back.error();
   EXPECT_EQ(back.value(), m);
+  // The marks (version 2): a cross in view is carried with its centre, orientation and confidence.
+  static_assert(std::tuple_size_v<decltype(wb::FieldLines{}.mark_x)> == kMaxFieldMarks);
+  testing::Scene cross = testing::field_scene();
+  cross.lines.push_back({{1.2, 0.55}, {1.3, 0.55}});
+  cross.lines.push_back({{1.25, 0.5}, {1.25, 0.6}});
+  const auto cross_frame = testing::render(cross, cam, hal::PixelFormat::kYuyv, 43);
+  const VisionResult& with_mark = p.process(cross_frame.view, cam.head);
+  ASSERT_EQ(with_mark.marks.count, 1U);
+  const wb::FieldLines mm = to_field_lines(with_mark);
+  EXPECT_EQ(mm.mark_count, 1U);
+  EXPECT_EQ(mm.mark_x[0], with_mark.marks.marks[0].centre.x);
+  EXPECT_EQ(mm.mark_y[0], with_mark.marks.marks[0].centre.y);
+  EXPECT_EQ(mm.mark_orientation[0], with_mark.marks.marks[0].orientation_rad);
+  EXPECT_EQ(mm.mark_confidence[0], with_mark.marks.marks[0].confidence);
+  EXPECT_NEAR(mm.mark_x[0], 1.25, 0.02);
+  EXPECT_NEAR(mm.mark_y[0], 0.55, 0.02);
+  const auto mark_back = wb::FieldLines::from_string(mm.description());
+  ASSERT_TRUE(mark_back.has_value()) << mark_back.error();
+  EXPECT_EQ(mark_back.value(), mm);
   const wb::BallBelief ball = to_ball_belief(r);
   EXPECT_FALSE(ball.simulated);
   EXPECT_EQ(ball.visible, r.ball.seen && r.ball.ground_valid);

@@ -20,8 +20,10 @@ TEST(WbTypeList, NamesAndIdsAreTheSchemaOnes) {
   for (std::size_t i = 0; i < kTypeCount; ++i) {
     EXPECT_EQ(kTypes[i].name, names[i]);
     EXPECT_EQ(to_underlying(kTypes[i].id), i + 1);
-    // Version 2: HeadPosture gained the torso's tilt, ExecutiveTiming the task table, Plan the map.
-    const bool second = names[i] == "HeadPosture" || names[i] == "ExecutiveTiming" || names[i] == "Plan";
+    // Version 2: HeadPosture gained the torso's tilt, ExecutiveTiming the task table, Plan the map,
+    // FieldLines the penalty and centre marks.
+    const bool second = names[i] == "HeadPosture" || names[i] == "ExecutiveTiming" || names[i] == "Plan" ||
+                        names[i] == "FieldLines";
     EXPECT_EQ(kTypes[i].version, second ? 2 : 1) << names[i];
   }
   static_assert(BallBelief::kId == TypeId{1} && Print::kName == "Print");

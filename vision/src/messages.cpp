@@ -27,6 +27,15 @@ wb::FieldLines to_field_lines(const VisionResult& r) noexcept {
   m.circle_x = r.circle.centre.x;
   m.circle_y = r.circle.centre.y;
   m.circle_radius = r.circle.radius_m;
+  const std::size_t marks = std::min(r.marks.count, m.mark_x.size());
+  m.mark_count = static_cast<std::uint8_t>(marks);
+  for (std::size_t i = 0; i < marks; ++i) {
+    const FieldMark& f = r.marks.marks[i];
+    m.mark_x[i] = f.centre.x;
+    m.mark_y[i] = f.centre.y;
+    m.mark_orientation[i] = f.orientation_rad;
+    m.mark_confidence[i] = f.confidence;
+  }
   return m;
 }
 
