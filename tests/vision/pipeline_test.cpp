@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "ringlet/vision/messages.hpp"
 #include "ringlet/vision/pipeline.hpp"
@@ -223,6 +224,46 @@ TEST(Pipeline, UprightPiecesInsideAVerifiedRobotAreItsLegs) {
   lines[0] = piece(120, 80, 125, 160);
   EXPECT_EQ(drop_robot_legs(lines, 1, robots, -1.0), 1U) << "a negative slant turns it off";
   EXPECT_EQ(drop_robot_legs(lines, 1, robots, 0.35), 0U);
+}
+
+// A goal post's or a leg's base lines up like a line running away; above its top end the band
+// goes on up, above a painted line's end lies carpet.
+TEST(Pipeline, UprightPiecesWhoseBandGoesOnUpAreStandingObjects) {
+  std::vector<std::uint8_t> grey(640 * 480, 100);  // carpet
+  const auto paint = [&](int u0, int u1, int v0, int v1) {
+    for (int v = v0; v < v1; ++v) {
+      for (int u = u0; u < u1; ++u) grey[static_cast<std::size_t>(v) * 640 + static_cast<std::size_t>(u)] = 200;
+    }
+  };
+  paint(300, 306, 100, 400);  // a post: bright from row 100 down to its base
+  paint(400, 405, 200, 300);  // a painted line's piece, ending at row 200
+  paint(100, 300, 420, 425);  // a line across the picture
+  hal::FrameView frame;
+  frame.format = hal::PixelFormat::kGray8;
+  frame.width = 640;
+  frame.height = 480;
+  frame.stride = 640;
+  frame.data = grey.data();
+  const auto piece = [](double u0, double v0, double u1, double v1) {
+    FieldLine f;
+    f.image_start = {u0, v0};
+    f.image_end = {u1, v1};
+    return f;
+  };
+  std::array<FieldLine, kMaxLines> lines{};
+  lines[0] = piece(303, 390, 303, 250);  // on the post, its top end at row 250: the band goes on
+  lines[1] = piece(402, 300, 402, 201);  // the line's piece, cut at its end: carpet above
+  lines[2] = piece(100, 422, 299, 422);  // not upright
+  lines[3] = piece(402, 201, 402, 300);  // the line's piece again, its ends the other way round
+  const std::size_t n = drop_standing_objects(lines, 4, frame, 0.35, 18);
+  ASSERT_EQ(n, 3U);
+  EXPECT_DOUBLE_EQ(lines[0].image_start.u, 402.0) << "the others keep their order";
+  EXPECT_DOUBLE_EQ(lines[1].image_start.u, 100.0);
+  EXPECT_DOUBLE_EQ(lines[2].image_start.v, 201.0);
+  lines[0] = piece(303, 250, 303, 390);  // the post with its ends the other way round
+  EXPECT_EQ(drop_standing_objects(lines, 1, frame, 0.35, 18), 0U);
+  lines[0] = piece(303, 250, 303, 390);
+  EXPECT_EQ(drop_standing_objects(lines, 1, frame, 0.35, 0), 1U) << "reach 0 turns it off";
 }
 
 TEST(Pipeline, WrongFrameSizeIsRefused) {

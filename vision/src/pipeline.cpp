@@ -28,6 +28,42 @@ std::size_t drop_robot_legs(std::span<FieldLine> lines, std::size_t count, const
   return kept;
 }
 
+std::size_t drop_standing_objects(std::span<FieldLine> lines, std::size_t count, const hal::FrameView& frame,
+                                  double max_slant, int reach_px) noexcept {
+  if (reach_px <= 0 || max_slant < 0.0 || frame.data == nullptr) return count;
+  constexpr int kStep = 6;       // px between the samples above the top end
+  constexpr int kDarker = 25;    // a sample this much darker than the piece's middle is not its band
+  const auto luma = [&](double u, double v, int& y) {
+    const int x = static_cast<int>(std::floor(u)), r = static_cast<int>(std::floor(v));
+    if (x < 0 || x >= frame.width || r < 0 || r >= frame.height) return false;
+    y = luma_at(frame, x, r);
+    return true;
+  };
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < count && i < lines.size(); ++i) {
+    const FieldLine& f = lines[i];
+    const double du = f.image_end.u - f.image_start.u, dv = f.image_end.v - f.image_start.v;
+    const double len = std::sqrt(du * du + dv * dv);
+    int y_mid = 0;
+    bool standing = false;
+    if (std::abs(du) <= max_slant * std::abs(dv) && len >= 1.0 &&
+        luma((f.image_start.u + f.image_end.u) / 2.0, (f.image_start.v + f.image_end.v) / 2.0, y_mid)) {
+      const hal::Pixel& top = dv < 0.0 ? f.image_end : f.image_start;  // the smaller row
+      const double uu = (dv < 0.0 ? du : -du) / len, uv = (dv < 0.0 ? dv : -dv) / len;  // upwards
+      int samples = 0, bright = 0;
+      for (int d = kStep; d <= reach_px; d += kStep) {
+        int y = 0;
+        if (!luma(top.u + uu * d, top.v + uv * d, y)) break;
+        ++samples;
+        bright += y >= y_mid - kDarker ? 1 : 0;
+      }
+      standing = samples >= 2 && bright == samples;
+    }
+    if (!standing) lines[kept++] = f;
+  }
+  return kept;
+}
+
 VisionPipeline::VisionPipeline(const VisionConfig& config, ColourTable table)
     : config_(config),
       table_(std::move(table)),
@@ -182,6 +218,9 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     const std::size_t reported = r.line_count;
     r.line_count = drop_robot_legs(r.lines, r.line_count, r.robots, config_.robot_leg_max_slant);
     r.robot_legs_dropped = static_cast<int>(reported - r.line_count);
+    const std::size_t kept = r.line_count;
+    r.line_count = drop_standing_objects(r.lines, r.line_count, frame, config_.robot_leg_max_slant, config_.standing_reach_px);
+    r.standing_dropped = static_cast<int>(kept - r.line_count);
     // The crosses from what the lines, the circle and the balls leave over (bounded, no trials).
     marks_.find(candidates_.points(), std::span<const FieldLine>(r.lines.data(), r.line_count), r.circle,
                 std::span<const BallDetection>(r.balls.balls.data(), r.balls.count), classes_, k, pose, deadline,

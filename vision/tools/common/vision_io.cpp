@@ -239,7 +239,7 @@ nlohmann::json result_json(const VisionResult& r) {
                        {"circle_points", rs.circle_points},      {"splits", rs.splits},
                        {"merges", rs.merges},                    {"beyond_max_lines", rs.segments_dropped},
                        {"stopped_by_deadline", rs.stopped_early},
-                       {"on_robots", r.robot_legs_dropped}};
+                       {"on_robots", r.robot_legs_dropped},      {"standing", r.standing_dropped}};
   if (r.circle.seen) {
     out["circle"] = {{"seen", true},
                      {"centre", {r.circle.centre.x, r.circle.centre.y}},

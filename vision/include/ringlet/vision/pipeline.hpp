@@ -57,6 +57,9 @@ struct VisionConfig {
   // vertical (horizontal px per vertical px: about 20°) is the robot's leg, not paint, and is
   // dropped (drop_robot_legs); < 0: never.
   double robot_leg_max_slant = 0.35;
+  // An upright piece (the same slant) whose bright band goes on for standing_reach_px above its
+  // top end is a standing object (a goal post, a leg), not paint (drop_standing_objects); 0: never.
+  int standing_reach_px = 18;
   BallParams ball{};                     // ball.mode picks the orange or the black-and-white detector
   BwBallParams bw_ball{};
   bool robots = true;                    // the robot stage (runs only with a robot model installed)
@@ -104,6 +107,7 @@ struct VisionResult {
   std::array<FieldLine, kMaxLines> lines{};
   std::size_t line_count = 0;
   int robot_legs_dropped = 0;   // pieces RANSAC reported that lay on verified robots (drop_robot_legs)
+  int standing_dropped = 0;     // upright pieces whose band went on up: posts, legs (drop_standing_objects)
   CentreCircle circle{};
   FieldMarkList marks{};        // penalty and centre marks (crosses), found in the line stage
   BallDetection ball{};         // the best ball (balls.balls[0] when balls.count > 0)
@@ -128,6 +132,15 @@ struct VisionResult {
 /// between or behind the legs crosses the box. Keeps the order; returns the new count.
 [[nodiscard]] std::size_t drop_robot_legs(std::span<FieldLine> lines, std::size_t count, const RobotList& robots,
                                           double max_slant) noexcept;
+
+/// Drops from lines[0, count) every upright piece (within `max_slant` of the image's vertical)
+/// whose bright band goes on above its top end: every sample, 6 px apart up to `reach_px` beyond
+/// it, at most 25 luminance levels darker than the piece's middle. The pieces are cut to their
+/// paint (LineCheck), so above a painted line's end lies carpet; above a goal post's or a leg's
+/// base, where the scan's runs lined up like a line running away, the post or the leg goes on up.
+/// Keeps the order; returns the new count.
+[[nodiscard]] std::size_t drop_standing_objects(std::span<FieldLine> lines, std::size_t count, const hal::FrameView& frame,
+                                                double max_slant, int reach_px) noexcept;
 
 class VisionPipeline {
  public:
