@@ -7,6 +7,15 @@
 #include "ringlet/vision/horizon.hpp"
 
 namespace ringlet::vision {
+namespace {
+
+// Within max_slant (horizontal px per vertical px) of the image's vertical: a line running away
+// from the camera, or something standing.
+bool upright(const FieldLine& f, double max_slant) noexcept {
+  return std::abs(f.image_end.u - f.image_start.u) <= max_slant * std::abs(f.image_end.v - f.image_start.v);
+}
+
+}  // namespace
 
 std::size_t drop_robot_legs(std::span<FieldLine> lines, std::size_t count, const RobotList& robots,
                             double max_slant) noexcept {
@@ -17,9 +26,8 @@ std::size_t drop_robot_legs(std::span<FieldLine> lines, std::size_t count, const
   std::size_t kept = 0;
   for (std::size_t i = 0; i < count && i < lines.size(); ++i) {
     const FieldLine& f = lines[i];
-    const bool upright = std::abs(f.image_end.u - f.image_start.u) <= max_slant * std::abs(f.image_end.v - f.image_start.v);
     bool leg = false;
-    for (std::size_t j = 0; j < robots.count && upright && !leg; ++j) {
+    for (std::size_t j = 0; j < robots.count && upright(f, max_slant) && !leg; ++j) {
       const RobotDetection& d = robots.robots[j];
       leg = d.verified && inside(f.image_start, d) && inside(f.image_end, d);
     }
@@ -46,7 +54,7 @@ std::size_t drop_standing_objects(std::span<FieldLine> lines, std::size_t count,
     const double len = std::sqrt(du * du + dv * dv);
     int y_mid = 0;
     bool standing = false;
-    if (std::abs(du) <= max_slant * std::abs(dv) && len >= 1.0 &&
+    if (upright(f, max_slant) && len >= 1.0 &&
         luma((f.image_start.u + f.image_end.u) / 2.0, (f.image_start.v + f.image_end.v) / 2.0, y_mid)) {
       const hal::Pixel& top = dv < 0.0 ? f.image_end : f.image_start;  // the smaller row
       const double uu = (dv < 0.0 ? du : -du) / len, uv = (dv < 0.0 ? dv : -dv) / len;  // upwards

@@ -243,11 +243,11 @@ EvalReport run_evaluation(const EvalOptions& o) {
       segments.push_back({line.image_start.u, line.image_start.v, line.image_end.u, line.image_end.v});
     }
     // A cross's bars are painted lines too (the truth lists them): scored as its two bars.
-    const hal::CameraPose mark_pose = hal::CameraPose::from_head(f.meta.mount, f.meta.head);
+    const hal::CameraPose pose = hal::CameraPose::from_head(f.meta.mount, f.meta.head);
     for (std::size_t m = 0; m < result.marks.count; ++m) {
       for (const auto& bar : FieldMarkFinder::bars(result.marks.marks[m], o.vision.marks.bar_length_m)) {
-        const auto a = hal::project(f.meta.intrinsics, mark_pose, {bar[0].x, bar[0].y, 0.0});
-        const auto b = hal::project(f.meta.intrinsics, mark_pose, {bar[1].x, bar[1].y, 0.0});
+        const auto a = hal::project(f.meta.intrinsics, pose, {bar[0].x, bar[0].y, 0.0});
+        const auto b = hal::project(f.meta.intrinsics, pose, {bar[1].x, bar[1].y, 0.0});
         if (a && b) segments.push_back({a->u, a->v, b->u, b->v});
       }
     }
@@ -261,7 +261,6 @@ EvalReport run_evaluation(const EvalOptions& o) {
     for (std::size_t m = 0; m < result.marks.count; ++m) marks.push_back(result.marks.marks[m].centre);
     report.marks += score_marks(marks, f.meta.marks, o.mark_match);
     std::vector<RingImage> rings;
-    const hal::CameraPose pose = hal::CameraPose::from_head(f.meta.mount, f.meta.head);
     for (const TruthRing& ring : f.meta.rings) {
       if (ring.visible) rings.push_back(project_ring(ring, f.meta.intrinsics, pose));
     }
