@@ -402,6 +402,82 @@ TEST(Robots, NonFieldAcrossTheWholeViewIsNoRobot) {
   EXPECT_EQ(c.out.candidates, 0);
 }
 
+// The carpet's edge: the floor beyond it (grey 170: neither field nor line) runs from the top of
+// the picture down to a straight edge, `slope` px per px, or to a corner (`corner`: the edge rises
+// to the picture's middle and falls again). A robot standing on the carpet `before` robot heights
+// below the edge at its feet joins the edge's columns into one candidate far wider than a robot;
+// its feet, below the edge interpolated from either side, make it a candidate of its own.
+struct EdgeScene {
+  double slope = 0.1;
+  bool corner = false;
+  bool robot = true;
+  double before = 0.06;
+};
+
+Column detect_at_edge(const EdgeScene& e) {
+  Camera cam;
+  const hal::CameraPose pose = cam.pose();
+  const int w = cam.k.width, rows = cam.k.height;
+  std::vector<std::uint8_t> img(static_cast<std::size_t>(w * rows), 100);
+  Column c;
+  RobotDetector d(RobotParams{});
+  const auto foot = hal::project(cam.k, pose, {c.at.x, c.at.y, 0.0});
+  EXPECT_TRUE(foot.has_value());
+  if (!foot) return c;
+  c.foot = *foot;
+  c.height = d.expected_height_px(cam.k, pose, c.at);
+  const double h = c.height;
+  const double at_feet = foot->v - e.before * h;  // the edge's row at the robot's feet
+  for (int x = 0; x < w; ++x) {
+    const double edge = e.corner ? at_feet - e.slope * (w / 2.0 - std::abs(x - w / 2.0)) + e.slope * (w / 2.0 - std::abs(foot->u - w / 2.0))
+                                 : at_feet + e.slope * (x - foot->u);
+    for (int y = 0; y < std::min(rows, static_cast<int>(edge)); ++y) img[static_cast<std::size_t>(y * w + x)] = 170;
+  }
+  if (e.robot) {
+    for (int y = std::max(0, static_cast<int>(foot->v - h)); y < static_cast<int>(foot->v); ++y) {
+      for (int x = static_cast<int>(foot->u - 0.25 * h); x < static_cast<int>(foot->u + 0.25 * h); ++x) {
+        img[static_cast<std::size_t>(y * w + x)] = 230;
+      }
+    }
+  }
+  EXPECT_TRUE(detect_on_grey(cam, img, d, c.out));
+  return c;
+}
+
+TEST(Robots, ARobotBeforeTheCarpetsEdgeIsFoundAtItsFeet) {
+  for (const double slope : {0.0, 0.1, -0.15}) {
+    for (const bool corner : {false, true}) {
+      // The carpet is convex, so seen from on it a corner lies farther than its sides: a peak,
+      // never a valley (a negative slope with a corner).
+      if (corner && slope <= 0.0) continue;
+      const Column c = detect_at_edge({slope, corner, true, 0.06});
+      ASSERT_GT(c.height, 50.0);
+      // The robot, at its feet and a robot wide. Pieces of the edge beside it are candidates too
+      // (nearer ones first where the edge slopes down); the classifier rejects them, here there
+      // is none.
+      const std::string what = "slope " + std::to_string(slope) + (corner ? " corner" : "");
+      const RobotDetection* at_feet = nullptr;
+      for (std::size_t q = 0; q < c.out.count; ++q) {
+        const RobotDetection& r = c.out.robots[q];
+        if (std::abs(r.foot.u - c.foot.u) <= 0.06 * c.height && std::abs(r.foot.v - c.foot.v) <= 2.0) at_feet = &r;
+      }
+      ASSERT_NE(at_feet, nullptr) << what << ": " << c.out.count << " detections, none at the feet";
+      EXPECT_NEAR(at_feet->width, 0.31 / 0.574 * c.height, 0.1 * c.height) << what;
+    }
+  }
+}
+
+TEST(Robots, TheCarpetsEdgeAloneIsNoRobot) {
+  // Straight or with a corner (seen from inside, the corner lies farther: higher up), and with
+  // feet standing too little before it to tell them from the edge.
+  for (const bool corner : {false, true}) {
+    const Column c = detect_at_edge({0.12, corner, false, 0.06});
+    EXPECT_EQ(c.out.count, 0U) << (corner ? "corner" : "straight");
+  }
+  const Column c = detect_at_edge({0.1, false, true, 0.01});
+  EXPECT_EQ(c.out.count, 0U) << "feet 1 % of a robot's height below the edge are the edge";
+}
+
 // The window placements the trainer and the detectors share.
 TEST(HogWindows, BallAndRobotWindowsFollowTheParameters) {
   const WindowPlacement b = ball_window(BwBallParams{}, HogParams::ball(), {100, 80}, 10);

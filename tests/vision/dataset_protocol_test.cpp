@@ -95,11 +95,11 @@ TEST_F(DatasetProtocol, EvalAcceptsDisjointSetsAndNamesThem) {
   const ToolRun r = eval((root_ / "test").string() + " --tune-set " + (root_ / "tune").string() + " --disjoint-from " +
                      (root_ / "next").string());
   ASSERT_EQ(r.rc, 0) << r.out;
-  EXPECT_NE(r.out.find("test set:   " + (root_ / "test").string() + ": 4 frames, seed 22 (generator v3) frames 0-3"),
+  EXPECT_NE(r.out.find("test set:   " + (root_ / "test").string() + ": 4 frames, seed 22 (generator v4) frames 0-3"),
             std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("tuning set: " + (root_ / "tune").string() + ": 4 frames, seed 21 (generator v3) frames 0-3"),
+  EXPECT_NE(r.out.find("tuning set: " + (root_ / "tune").string() + ": 4 frames, seed 21 (generator v4) frames 0-3"),
             std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("excluded:   " + (root_ / "next").string() + ": 2 frames, seed 21 (generator v3) frames 4-5"),
+  EXPECT_NE(r.out.find("excluded:   " + (root_ / "next").string() + ": 2 frames, seed 21 (generator v4) frames 4-5"),
             std::string::npos) << r.out;
   EXPECT_NE(r.out.find("reported on the 4 test frames only"), std::string::npos) << r.out;
 }

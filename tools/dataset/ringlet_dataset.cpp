@@ -51,8 +51,9 @@ using namespace ringlet::sim_hal;
 
 /// Bumped whenever the frames a (seed, index) gives change: frames of different generator
 /// versions are different frames. 1: one stream for the whole run (a run was a prefix of any
-/// longer one). 2: one stream per frame. 3: the SPL look, balls and robots per frame.
-constexpr int kGeneratorVersion = 3;
+/// longer one). 2: one stream per frame. 3: the SPL look, balls and robots per frame. 4: the
+/// occluding robots stand on the carpet.
+constexpr int kGeneratorVersion = 4;
 
 /// Random poses tried before a world is declared to have no free pose.
 constexpr int kMaxPoseTries = 100000;
@@ -145,28 +146,18 @@ hal::Pose2 random_pose(const World& world, const std::string& world_file, Unifor
                      "\" is too small or full of obstacles");
 }
 
-/// One or two robots 0.5–1.6 m in front of the camera, inside ±25° of where it looks.
-std::vector<Circle> random_occluders(const hal::Pose2& pose, double head_yaw, Uniform& rnd) {
-  std::vector<Circle> robots;
-  const int n = rnd(0.0, 1.0) < 0.5 ? 1 : 2;
-  for (int i = 0; i < n; ++i) {
-    const double distance = rnd(0.5, 1.6);
-    // Bearing in the world (geometry.hpp): the robot's heading minus the head's left yaw.
-    const double bearing = pose.theta - head_yaw + hal::deg_to_rad(rnd(-25.0, 25.0));
-    Circle c;
-    c.centre = {pose.x + distance * std::sin(bearing), pose.y + distance * std::cos(bearing)};
-    c.radius = 0.15;
-    c.height = 0.58;
-    c.kind = ObstacleKind::kRobot;
-    robots.push_back(c);
-  }
-  return robots;
-}
-
 /// Where things may stand: on the carpet, 0.2 m inside the bounds, off every obstacle by `clear`.
 bool free_spot(const World& world, Vec2 p, double clear) {
   return p.x > world.min.x + 0.2 && p.x < world.max.x - 0.2 && p.y > world.min.y + 0.2 && p.y < world.max.y - 0.2 &&
          !disc_collides(world, p, clear);
+}
+
+/// Where a robot may stand: a free spot (off every obstacle by a robot's 0.15 m and a little) and
+/// not on a ball (one standing on it would hide it inside its feet).
+bool robot_spot(const World& scene, Vec2 p) {
+  const auto on_ball = [&](const Ball& b) { return std::hypot(b.position.x - p.x, b.position.y - p.y) <= 0.25; };
+  return free_spot(scene, p, 0.16) && !(scene.ball && on_ball(*scene.ball)) &&
+         std::none_of(scene.extra_balls.begin(), scene.extra_balls.end(), on_ball);
 }
 
 /// A point `distance` m from the camera robot, at `spread_deg` around where the head looks (the
@@ -174,6 +165,24 @@ bool free_spot(const World& world, Vec2 p, double clear) {
 Vec2 around_view(const hal::Pose2& pose, double head_yaw, double distance, double spread_deg, Uniform& rnd) {
   const double bearing = pose.theta - head_yaw + hal::deg_to_rad(rnd(-spread_deg, spread_deg));
   return {pose.x + distance * std::sin(bearing), pose.y + distance * std::cos(bearing)};
+}
+
+/// One or two robots 0.5–1.6 m in front of the camera, inside ±25° of where it looks, standing on
+/// the carpet like every other robot (version 3 put them anywhere: past the carpet's edge, on the
+/// floor, where no robot of a game stands). A draw that finds no free spot places fewer.
+std::vector<Circle> random_occluders(const World& scene, const hal::Pose2& pose, double head_yaw, Uniform& rnd) {
+  std::vector<Circle> robots;
+  World probe = scene;
+  const int n = rnd(0.0, 1.0) < 0.5 ? 1 : 2;
+  for (int i = 0, tries = 0; i < n && tries < 50; ++tries) {
+    const Vec2 p = around_view(pose, head_yaw, rnd(0.5, 1.6), 25.0, rnd);
+    if (!robot_spot(probe, p)) continue;
+    const Circle c{p, 0.15, 0.58, ObstacleKind::kRobot};
+    probe.circles.push_back(c);
+    robots.push_back(c);
+    ++i;
+  }
+  return robots;
 }
 
 /// 1..max balls (SPL size, 0.05 m radius) 0.5-6 m away, most in view; each off the robots.
@@ -201,12 +210,7 @@ std::vector<Circle> random_robots(const World& scene, const hal::Pose2& pose, do
   for (int i = 0, tries = 0; i < n && tries < 50; ++tries) {
     const Vec2 p = around_view(pose, head_yaw, rnd(0.5, 6.0), 38.0, rnd);
     const double dx = p.x - pose.x, dy = p.y - pose.y;
-    if (!free_spot(probe, p, 0.16) || dx * dx + dy * dy < 0.45 * 0.45) continue;
-    // A robot standing on a ball would hide it inside its feet.
-    const auto on_ball = [&](const Ball& b) { return std::hypot(b.position.x - p.x, b.position.y - p.y) <= 0.25; };
-    if ((scene.ball && on_ball(*scene.ball)) || std::any_of(scene.extra_balls.begin(), scene.extra_balls.end(), on_ball)) {
-      continue;
-    }
+    if (!robot_spot(probe, p) || dx * dx + dy * dy < 0.45 * 0.45) continue;
     const Circle c{p, 0.15, 0.574, ObstacleKind::kRobot};
     probe.circles.push_back(c);
     robots.push_back(c);
@@ -360,7 +364,7 @@ int run(const Options& o) {
       scene.lighting = random_lighting(world.lighting, rnd);
       scene.look.ball = o.ball == "bw" ? BallLook::kBlackWhite : BallLook::kOrange;
     }
-    if (rnd(0.0, 1.0) < o.occluded_share) record.occluders = random_occluders(pose, head.yaw, rnd);
+    if (rnd(0.0, 1.0) < o.occluded_share) record.occluders = random_occluders(scene, pose, head.yaw, rnd);
     scene.circles.insert(scene.circles.end(), record.occluders.begin(), record.occluders.end());
 
     CameraRenderer renderer(std::move(scene), spec, render_seed(o.seed, static_cast<std::uint64_t>(i)));

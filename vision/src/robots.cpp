@@ -45,6 +45,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
   const int col_stride = std::max(s, (std::max(stride, 1) + s - 1) / s * s);
   const int first = classes.first_row();
   const int h = classes.height();
+  column_count_ = 0;
   const auto height_at = [&](double u, double v) {
     const auto p = hal::pixel_to_ground(k, pose, {u, v});
     return p ? expected_height_px(k, pose, *p) : 0.0;
@@ -149,6 +150,10 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
       gap_at = -1;
       gap_end = -1;
     }
+    if (x / col_stride < static_cast<int>(column_foot_.size())) {
+      column_foot_[static_cast<std::size_t>(x / col_stride)] = best_foot;
+      column_count_ = x / col_stride + 1;
+    }
     // The open candidate (and a shadow promoted in its place) out of reach ends.
     while (has_open && x - open.x_max > join) close();
     if (best_foot < 0) continue;
@@ -224,11 +229,71 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
       ++j;
     }
   }
+  // Robots standing before the field's edge (robots.hpp): inside a wide candidate, the columns
+  // whose feet lie clearly below the edge interpolated from either side. True when any was found.
+  const auto split_at_edge = [&](const Candidate& c) {
+    const int i0 = c.x_min / col_stride;
+    const int i1 = c.x_max / col_stride;
+    if (i1 >= column_count_) return false;
+    const double expected_width = expected_width_of(c);
+    const int reach = std::max(2, static_cast<int>(0.75 * expected_width / col_stride));
+    const int gap = std::max(1, static_cast<int>(params_.join_share * expected_width / col_stride));
+    const int rise = std::max(2 * s, static_cast<int>(params_.protrusion_share * c.height_px));
+    const auto foot_at = [&](int i) { return column_foot_[static_cast<std::size_t>(i)]; };
+    // The nearest column with a foot from `i` towards `toward` (-1: none before it).
+    const auto valid_from = [&](int i, int toward) {
+      const int dir = toward > i ? 1 : -1;
+      for (; i != toward; i += dir) {
+        if (foot_at(i) >= 0) return i;
+      }
+      return -1;
+    };
+    bool found = false;
+    Candidate part{};
+    bool open_part = false;
+    int last = 0;
+    const auto end_part = [&]() {
+      if (!open_part) return;
+      open_part = false;
+      part.height_px = height_at(0.5 * (part.x_min + part.x_max + s), part.foot_row);
+      if (part.height_px <= 0.0 || width_of(part) < params_.min_width_share * expected_width_of(part)) return;
+      push(part);
+      found = true;
+    };
+    for (int i = i0; i <= i1; ++i) {
+      const int f = foot_at(i);
+      if (f < 0) continue;
+      // The edge through a column on either side, or, near the candidate's end, through two on
+      // the one side (a sloping edge is not flat).
+      int l = i - reach >= i0 ? valid_from(i - reach, i) : -1;
+      int r = i + reach <= i1 ? valid_from(i + reach, i) : -1;
+      if (l < 0 && r >= 0) l = r + reach <= i1 ? valid_from(r + reach, r) : -1;
+      if (r < 0 && l >= 0) r = l - reach >= i0 ? valid_from(l - reach, l) : -1;
+      if (l < 0 || r < 0 || l == r) continue;
+      const double t = static_cast<double>(i - l) / static_cast<double>(r - l);
+      const double edge = foot_at(l) + t * (foot_at(r) - foot_at(l));
+      if (f - edge < rise) continue;
+      const int x = i * col_stride;
+      if (open_part && i - last <= gap) {
+        part.x_max = x;
+        part.foot_row = std::max(part.foot_row, f);
+        ++part.columns;
+      } else {
+        end_part();
+        part = {x, x, f, 1, 0.0};
+        open_part = true;
+      }
+      last = i;
+    }
+    end_part();
+    return found;
+  };
   // Kept when about a robot wide at its foot.
   for (std::size_t i = 0; i < raw_count_; ++i) {
     const Candidate& c = raw_[i];
     const double width = width_of(c);
     const double expected_width = expected_width_of(c);
+    if (width > params_.split_width_share * expected_width && split_at_edge(c)) continue;
     if (width < params_.min_width_share * expected_width || width > params_.max_width_share * expected_width) continue;
     push(c);
   }

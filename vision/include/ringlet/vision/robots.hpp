@@ -49,6 +49,7 @@ namespace ringlet::vision {
 inline constexpr std::size_t kMaxRobots = 6;
 inline constexpr std::size_t kMaxRobotCandidates = 16;
 inline constexpr std::size_t kMaxRawRobotCandidates = 64;
+inline constexpr std::size_t kMaxRobotColumns = 1024;  // scan columns remembered (a 4K frame at step 4)
 
 struct RobotParams {
   double height_m = 0.574;         // a standing NAO
@@ -64,6 +65,9 @@ struct RobotParams {
                                    //   the carpet is a "non-field run on the field" too, but wide)
   double merge_width_share = 1.0;  // pieces of one robot (cut by something before it) are joined
                                    //   when together at most this × expected width
+  double split_width_share = 1.5;  // a candidate wider than this × expected width is searched for
+                                   //   robots standing before the field's edge (below)
+  double protrusion_share = 0.04;  // feet this × expected height below the edge stand before it
   double window_height = 64.0 / 56.0;  // window height / expected robot height (margin above and below)
   double foot_row = 60.0 / 64.0;   // where the foot lies in the window, as a share of its height
   double foot_depth_m = 0.1;       // the lowest non-field row is the feet's near edge (and shadow);
@@ -139,6 +143,9 @@ class RobotDetector {
   std::size_t count_ = 0;
   std::array<Candidate, kMaxRawRobotCandidates> raw_{};  // before the pieces are joined and judged
   std::size_t raw_count_ = 0;
+  std::array<int, kMaxRobotColumns> column_foot_{};  // each scan column's foot row (-1: none)
+  int column_count_ = 0;
+
 };
 
 }  // namespace ringlet::vision
