@@ -1,5 +1,5 @@
 # ringlet-vision-eval's JSON: both detectors, each with precision, recall and F1 in [0, 1], a
-# positive median time and a count of arc pieces taken for lines; the centre circle's and the marks' scores. Run as: cmake -DJSON=<file> -P eval_json_case.cmake
+# positive median time, a count of arc pieces taken for lines and recall by the paint's width; the centre circle's and the marks' scores. Run as: cmake -DJSON=<file> -P eval_json_case.cmake
 file(READ ${JSON} text)
 foreach(d ringlet hough)
   foreach(m precision recall f1)
@@ -32,6 +32,25 @@ foreach(d ringlet hough)
   endforeach()
   if(NOT sum EQUAL arcs)
     message(FATAL_ERROR "${d}: per-frame arc pieces add up to ${sum}, not ${arcs}")
+  endif()
+  # Recall by the paint's width in the picture: four buckets whose truths and recalled add up to
+  # the detector's.
+  string(JSON nb LENGTH "${text}" detectors ${d} recall_by_width)
+  if(NOT nb EQUAL 4)
+    message(FATAL_ERROR "${d}: ${nb} width buckets, expected 4")
+  endif()
+  set(tsum 0)
+  set(rsum 0)
+  foreach(i RANGE 3)
+    string(JSON bt GET "${text}" detectors ${d} recall_by_width ${i} truths)
+    string(JSON br GET "${text}" detectors ${d} recall_by_width ${i} recalled)
+    math(EXPR tsum "${tsum} + ${bt}")
+    math(EXPR rsum "${rsum} + ${br}")
+  endforeach()
+  string(JSON truths GET "${text}" detectors ${d} truths)
+  string(JSON recalled GET "${text}" detectors ${d} recalled)
+  if(NOT tsum EQUAL truths OR NOT rsum EQUAL recalled)
+    message(FATAL_ERROR "${d}: width buckets hold ${tsum} truths (${rsum} recalled), the detector ${truths} (${recalled})")
   endif()
   message(STATUS "${d}: F1 ${v}, median ${t} ms, ${arcs} arc pieces taken for lines")
 endforeach()

@@ -1,6 +1,7 @@
 // The evaluation's matching rule (vision/tools/evaluate/segment_match.hpp) on hand-made cases.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <vector>
 
 #include "segment_match.hpp"
@@ -88,6 +89,23 @@ TEST(SegmentMatch, AFitThroughAnOccluderMatchesTheMarkingAndRecallsItsPieces) {
   for (TruthSegment& t : unmarked) t.marking = -1;
   c = match_segments(through, unmarked);
   EXPECT_EQ(c.true_positives, 0U);
+}
+
+TEST(SegmentMatch, RecallIsAlsoCountedByThePaintsWidthInThePicture) {
+  // Half widths 0.5, 1.5, 3 and 6 px: paint 1, 3, 6 and 12 px wide, one truth in each bucket.
+  const std::vector<TruthSegment> truth{
+      {{0, 0, 100, 0}, 0.5}, {{0, 50, 100, 50}, 1.5}, {{0, 100, 100, 100}, 3.0}, {{0, 200, 100, 200}, 6.0}};
+  const std::vector<Segment2> found{{0, 0, 100, 0}, {0, 200, 100, 200}};  // the thinnest and the widest
+  const auto c = match_segments(found, truth);
+  EXPECT_EQ(c.truths_by_width, (std::array<std::size_t, 4>{1, 1, 1, 1}));
+  EXPECT_EQ(c.recalled_by_width, (std::array<std::size_t, 4>{1, 0, 0, 1}));
+  EXPECT_EQ(width_bucket(0.99), 0U);  // 1.98 px
+  EXPECT_EQ(width_bucket(1.0), 1U);   // 2 px: the next bucket starts there
+  EXPECT_EQ(width_bucket(100.0), 3U);
+  MatchCounts sum = c;
+  sum += c;
+  EXPECT_EQ(sum.truths_by_width[3], 2U);
+  EXPECT_EQ(sum.recalled_by_width[0], 2U);
 }
 
 TEST(SegmentMatch, CountsAddUp) {

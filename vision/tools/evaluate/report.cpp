@@ -43,6 +43,19 @@ nlohmann::json robot_matches_json(std::vector<EvalReport::RobotMatchInFrame> mat
   return out;
 }
 
+// Recall by the paint's width in the picture (segment_match.hpp's buckets).
+nlohmann::json recall_by_width_json(const MatchCounts& c) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t b = 0; b < kWidthBucketsPx.size(); ++b) {
+    const std::size_t n = c.truths_by_width[b];
+    nlohmann::json row = {{"min_px", kWidthBucketsPx[b]}, {"truths", n}, {"recalled", c.recalled_by_width[b]},
+                          {"recall", n == 0 ? 0.0 : static_cast<double>(c.recalled_by_width[b]) / static_cast<double>(n)}};
+    row["max_px"] = b + 1 < kWidthBucketsPx.size() ? nlohmann::json(kWidthBucketsPx[b + 1]) : nlohmann::json(nullptr);
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
 nlohmann::json detector_json(const DetectorReport& d) {
   const MatchCounts& c = d.counts;
   // Per test frame, in the order of "test_frames": [truths, recalled, detections, true positives].
@@ -69,6 +82,7 @@ nlohmann::json detector_json(const DetectorReport& d) {
           {"mean_angle_error_deg", c.mean_angle_error_deg()},
           {"mean_endpoint_error_px", c.mean_endpoint_error_px()},
           {"mean_extent_error_px", c.mean_extent_error_px()},
+          {"recall_by_width", recall_by_width_json(c)},
           {"arc_false_positives", d.arc_false_positives()},
           {"frames_with_arc_false_positives", d.frames_with_arc_false_positives()},
           {"per_frame_arc_pieces", d.per_frame_arcs},
@@ -154,6 +168,18 @@ void print_report(const EvalReport& r, std::ostream& os) {
   row("mean angle error (deg)", fmt("%.2f", a.mean_angle_error_deg()), fmt("%.2f", b.mean_angle_error_deg()));
   row("mean endpoint error (px)", fmt("%.2f", a.mean_endpoint_error_px()), fmt("%.2f", b.mean_endpoint_error_px()));
   row("mean extent error (px)", fmt("%.1f", a.mean_extent_error_px()), fmt("%.1f", b.mean_extent_error_px()));
+  for (std::size_t k = 0; k < kWidthBucketsPx.size(); ++k) {
+    const std::string name = k + 1 < kWidthBucketsPx.size()
+                                 ? "recall, paint " + fmt("%.0f", kWidthBucketsPx[k]) + "-" + fmt("%.0f", kWidthBucketsPx[k + 1]) + " px"
+                                 : "recall, paint >= " + fmt("%.0f", kWidthBucketsPx[k]) + " px";
+    const auto cell = [&](const MatchCounts& m) {
+      return m.truths_by_width[k] == 0 ? std::string("-")
+                                       : fmt("%.3f", static_cast<double>(m.recalled_by_width[k]) /
+                                                         static_cast<double>(m.truths_by_width[k])) +
+                                             " (" + std::to_string(m.truths_by_width[k]) + ")";
+    };
+    row(name.c_str(), cell(a), cell(b));
+  }
   row("time/frame median (ms)", fmt("%.3f", r.ringlet.median_ms()), fmt("%.3f", r.baseline.median_ms()));
   row("time/frame p99 (ms)", fmt("%.3f", r.ringlet.p99_ms()), fmt("%.3f", r.baseline.p99_ms()));
   row("arc pieces taken for lines", std::to_string(r.ringlet.arc_false_positives()),

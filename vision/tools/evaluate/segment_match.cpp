@@ -61,6 +61,12 @@ double covered(std::vector<std::pair<double, double>>& intervals, double len, do
 
 }  // namespace
 
+std::size_t width_bucket(double half_width_px) noexcept {
+  std::size_t b = 0;
+  while (b + 1 < kWidthBucketsPx.size() && 2.0 * half_width_px >= kWidthBucketsPx[b + 1]) ++b;
+  return b;
+}
+
 MatchCounts& MatchCounts::operator+=(const MatchCounts& o) noexcept {
   detections += o.detections;
   true_positives += o.true_positives;
@@ -69,6 +75,10 @@ MatchCounts& MatchCounts::operator+=(const MatchCounts& o) noexcept {
   angle_error_sum_deg += o.angle_error_sum_deg;
   endpoint_error_sum_px += o.endpoint_error_sum_px;
   extent_error_sum_px += o.extent_error_sum_px;
+  for (std::size_t b = 0; b < kWidthBucketsPx.size(); ++b) {
+    truths_by_width[b] += o.truths_by_width[b];
+    recalled_by_width[b] += o.recalled_by_width[b];
+  }
   return *this;
 }
 
@@ -175,10 +185,13 @@ MatchCounts match_segments(std::span<const Segment2> detected, std::span<const T
     const double len = length(truth[i].line);
     if (len < params.min_truth_length_px) continue;
     ++counts.truths;
+    const std::size_t bucket = width_bucket(truth[i].half_width_px);
+    ++counts.truths_by_width[bucket];
     double first = 0.0;
     double last = 0.0;
     if (cover[i].empty() || covered(cover[i], len, first, last) < params.min_coverage * len) continue;
     ++counts.recalled;
+    ++counts.recalled_by_width[bucket];
     counts.extent_error_sum_px += (first + (len - last)) / 2.0;
   }
   return counts;

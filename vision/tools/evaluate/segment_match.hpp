@@ -20,6 +20,7 @@
 //   (pixels); over recalled true segments: extent error, how far the covered interval's ends are
 //   from the true segment's ends (pixels).
 #include <cstddef>
+#include <array>
 #include <span>
 
 namespace ringlet::vision::evaluate {
@@ -46,6 +47,12 @@ struct MatchParams {
   double min_truth_length_px = 20.0;
 };
 
+/// Recall is also counted by how wide the paint is in the picture (twice the truth's half width):
+/// below 2 px, 2–4, 4–8 and from 8 px. Where the misses lie says what would help: far lines a pixel
+/// or two wide need other evidence than near ones.
+inline constexpr std::array<double, 4> kWidthBucketsPx{0.0, 2.0, 4.0, 8.0};
+[[nodiscard]] std::size_t width_bucket(double half_width_px) noexcept;
+
 struct MatchCounts {
   std::size_t detections = 0;       // scored detections (those matching only don't-care ones excluded)
   std::size_t true_positives = 0;   // scored detections that match a true segment
@@ -54,6 +61,8 @@ struct MatchCounts {
   double angle_error_sum_deg = 0.0;     // over true positives
   double endpoint_error_sum_px = 0.0;   // over true positives (mean of their two endpoints)
   double extent_error_sum_px = 0.0;     // over recalled truths (mean of their two ends)
+  std::array<std::size_t, kWidthBucketsPx.size()> truths_by_width{};    // truths, by width_bucket
+  std::array<std::size_t, kWidthBucketsPx.size()> recalled_by_width{};  // recalled truths, by width_bucket
 
   MatchCounts& operator+=(const MatchCounts& o) noexcept;
   [[nodiscard]] double precision() const noexcept;
