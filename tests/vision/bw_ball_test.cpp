@@ -208,6 +208,17 @@ bool detect_on_grey(const Camera& cam, std::vector<std::uint8_t>& img, RobotDete
   return true;
 }
 
+// The column's foot pixel and image height where it stands (c.at); false when it does not project.
+bool place_column(const Camera& cam, const RobotDetector& d, Column& c) {
+  const hal::CameraPose pose = cam.pose();
+  const auto foot = hal::project(cam.k, pose, {c.at.x, c.at.y, 0.0});
+  EXPECT_TRUE(foot.has_value());
+  if (!foot) return false;
+  c.foot = *foot;
+  c.height = d.expected_height_px(cam.k, pose, c.at);
+  return true;
+}
+
 Column detect_column(const ColumnScene& scene_spec) {
   const double half_width = scene_spec.half_width;
   Camera cam;
@@ -215,11 +226,8 @@ Column detect_column(const ColumnScene& scene_spec) {
   std::vector<std::uint8_t> img(static_cast<std::size_t>(cam.k.width * cam.k.height), 100);
   Column c;
   RobotDetector d(RobotParams{});
-  const auto foot = hal::project(cam.k, pose, {c.at.x, c.at.y, 0.0});
-  EXPECT_TRUE(foot.has_value());
-  if (!foot) return c;
-  c.foot = *foot;
-  c.height = d.expected_height_px(cam.k, pose, c.at);
+  if (!place_column(cam, d, c)) return c;
+  const hal::Pixel* foot = &c.foot;
   const double h = c.height;
   const int x0 = half_width > 0.0 ? static_cast<int>(foot->u - half_width * h) : 0;
   const int x1 = half_width > 0.0 ? static_cast<int>(foot->u + half_width * h) : cam.k.width;
@@ -416,16 +424,12 @@ struct EdgeScene {
 
 Column detect_at_edge(const EdgeScene& e) {
   Camera cam;
-  const hal::CameraPose pose = cam.pose();
   const int w = cam.k.width, rows = cam.k.height;
   std::vector<std::uint8_t> img(static_cast<std::size_t>(w * rows), 100);
   Column c;
   RobotDetector d(RobotParams{});
-  const auto foot = hal::project(cam.k, pose, {c.at.x, c.at.y, 0.0});
-  EXPECT_TRUE(foot.has_value());
-  if (!foot) return c;
-  c.foot = *foot;
-  c.height = d.expected_height_px(cam.k, pose, c.at);
+  if (!place_column(cam, d, c)) return c;
+  const hal::Pixel* foot = &c.foot;
   const double h = c.height;
   const double at_feet = foot->v - e.before * h;  // the edge's row at the robot's feet
   for (int x = 0; x < w; ++x) {
