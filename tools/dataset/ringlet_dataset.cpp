@@ -167,22 +167,31 @@ Vec2 around_view(const hal::Pose2& pose, double head_yaw, double distance, doubl
   return {pose.x + distance * std::sin(bearing), pose.y + distance * std::cos(bearing)};
 }
 
-/// One or two robots 0.5–1.6 m in front of the camera, inside ±25° of where it looks, standing on
-/// the carpet like every other robot (version 3 put them anywhere: past the carpet's edge, on the
-/// floor, where no robot of a game stands). A draw that finds no free spot places fewer.
-std::vector<Circle> random_occluders(const World& scene, const hal::Pose2& pose, double head_yaw, Uniform& rnd) {
+/// Up to `n` NAO robots (`height` m tall) `near`–`far` m from the camera robot, within ±`spread_deg`
+/// of where the head looks, each on a robot_spot and off the ones placed before it; a draw that
+/// finds no spot in 50 tries places fewer.
+std::vector<Circle> place_robots(const World& scene, const hal::Pose2& pose, double head_yaw, int n, double near,
+                                 double far, double spread_deg, double height, Uniform& rnd) {
   std::vector<Circle> robots;
   World probe = scene;
-  const int n = rnd(0.0, 1.0) < 0.5 ? 1 : 2;
   for (int i = 0, tries = 0; i < n && tries < 50; ++tries) {
-    const Vec2 p = around_view(pose, head_yaw, rnd(0.5, 1.6), 25.0, rnd);
-    if (!robot_spot(probe, p)) continue;
-    const Circle c{p, 0.15, 0.58, ObstacleKind::kRobot};
+    const Vec2 p = around_view(pose, head_yaw, rnd(near, far), spread_deg, rnd);
+    const double dx = p.x - pose.x, dy = p.y - pose.y;
+    if (!robot_spot(probe, p) || dx * dx + dy * dy < 0.45 * 0.45) continue;  // never on the camera robot
+    const Circle c{p, 0.15, height, ObstacleKind::kRobot};
     probe.circles.push_back(c);
     robots.push_back(c);
     ++i;
   }
   return robots;
+}
+
+/// One or two robots 0.5–1.6 m in front of the camera, inside ±25° of where it looks, standing on
+/// the carpet like every other robot (version 3 put them anywhere: past the carpet's edge, on the
+/// floor, where no robot of a game stands).
+std::vector<Circle> random_occluders(const World& scene, const hal::Pose2& pose, double head_yaw, Uniform& rnd) {
+  const int n = rnd(0.0, 1.0) < 0.5 ? 1 : 2;
+  return place_robots(scene, pose, head_yaw, n, 0.5, 1.6, 25.0, 0.58, rnd);
 }
 
 /// 1..max balls (SPL size, 0.05 m radius) 0.5-6 m away, most in view; each off the robots.
@@ -204,19 +213,8 @@ std::vector<Ball> random_balls(const World& scene, const hal::Pose2& pose, doubl
 
 /// 0..max NAO robots 0.5-6 m away, some at the image's edges; never on the camera robot.
 std::vector<Circle> random_robots(const World& scene, const hal::Pose2& pose, double head_yaw, int max, Uniform& rnd) {
-  std::vector<Circle> robots;
   const int n = static_cast<int>(rnd(0.0, static_cast<double>(max) + 1.0));
-  World probe = scene;
-  for (int i = 0, tries = 0; i < n && tries < 50; ++tries) {
-    const Vec2 p = around_view(pose, head_yaw, rnd(0.5, 6.0), 38.0, rnd);
-    const double dx = p.x - pose.x, dy = p.y - pose.y;
-    if (!robot_spot(probe, p) || dx * dx + dy * dy < 0.45 * 0.45) continue;
-    const Circle c{p, 0.15, 0.574, ObstacleKind::kRobot};
-    probe.circles.push_back(c);
-    robots.push_back(c);
-    ++i;
-  }
-  return robots;
+  return place_robots(scene, pose, head_yaw, n, 0.5, 6.0, 38.0, 0.574, rnd);
 }
 
 Lighting random_lighting(const Lighting& base, Uniform& rnd) {

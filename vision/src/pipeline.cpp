@@ -15,6 +15,13 @@ bool upright(const FieldLine& f, double max_slant) noexcept {
   return std::abs(f.image_end.u - f.image_start.u) <= max_slant * std::abs(f.image_end.v - f.image_start.v);
 }
 
+// Drops the pieces `drop` picks from lines[0, count), keeping the order; the new count.
+template <typename Pred>
+std::size_t drop_lines(std::span<FieldLine> lines, std::size_t count, Pred drop) noexcept {
+  const auto end = lines.begin() + static_cast<std::ptrdiff_t>(std::min(count, lines.size()));
+  return static_cast<std::size_t>(std::remove_if(lines.begin(), end, drop) - lines.begin());
+}
+
 }  // namespace
 
 std::size_t drop_robot_legs(std::span<FieldLine> lines, std::size_t count, const RobotList& robots,
@@ -23,17 +30,14 @@ std::size_t drop_robot_legs(std::span<FieldLine> lines, std::size_t count, const
   const auto inside = [](const hal::Pixel& p, const RobotDetection& d) {
     return p.u >= d.left && p.u <= d.left + d.width && p.v >= d.top && p.v <= d.top + d.height;
   };
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < count && i < lines.size(); ++i) {
-    const FieldLine& f = lines[i];
-    bool leg = false;
-    for (std::size_t j = 0; j < robots.count && upright(f, max_slant) && !leg; ++j) {
+  return drop_lines(lines, count, [&](const FieldLine& f) {
+    if (!upright(f, max_slant)) return false;
+    for (std::size_t j = 0; j < robots.count; ++j) {
       const RobotDetection& d = robots.robots[j];
-      leg = d.verified && inside(f.image_start, d) && inside(f.image_end, d);
+      if (d.verified && inside(f.image_start, d) && inside(f.image_end, d)) return true;
     }
-    if (!leg) lines[kept++] = f;
-  }
-  return kept;
+    return false;
+  });
 }
 
 std::size_t drop_standing_objects(std::span<FieldLine> lines, std::size_t count, const hal::FrameView& frame,
@@ -47,29 +51,25 @@ std::size_t drop_standing_objects(std::span<FieldLine> lines, std::size_t count,
     y = luma_at(frame, x, r);
     return true;
   };
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < count && i < lines.size(); ++i) {
-    const FieldLine& f = lines[i];
+  return drop_lines(lines, count, [&](const FieldLine& f) {
     const double du = f.image_end.u - f.image_start.u, dv = f.image_end.v - f.image_start.v;
     const double len = std::sqrt(du * du + dv * dv);
     int y_mid = 0;
-    bool standing = false;
-    if (upright(f, max_slant) && len >= 1.0 &&
-        luma((f.image_start.u + f.image_end.u) / 2.0, (f.image_start.v + f.image_end.v) / 2.0, y_mid)) {
-      const hal::Pixel& top = dv < 0.0 ? f.image_end : f.image_start;  // the smaller row
-      const double uu = (dv < 0.0 ? du : -du) / len, uv = (dv < 0.0 ? dv : -dv) / len;  // upwards
-      int samples = 0, bright = 0;
-      for (int d = kStep; d <= reach_px; d += kStep) {
-        int y = 0;
-        if (!luma(top.u + uu * d, top.v + uv * d, y)) break;
-        ++samples;
-        bright += y >= y_mid - kDarker ? 1 : 0;
-      }
-      standing = samples >= 2 && bright == samples;
+    if (!upright(f, max_slant) || len < 1.0 ||
+        !luma((f.image_start.u + f.image_end.u) / 2.0, (f.image_start.v + f.image_end.v) / 2.0, y_mid)) {
+      return false;
     }
-    if (!standing) lines[kept++] = f;
-  }
-  return kept;
+    const hal::Pixel& top = dv < 0.0 ? f.image_end : f.image_start;  // the smaller row
+    const double uu = (dv < 0.0 ? du : -du) / len, uv = (dv < 0.0 ? dv : -dv) / len;  // upwards
+    int samples = 0, bright = 0;
+    for (int d = kStep; d <= reach_px; d += kStep) {
+      int y = 0;
+      if (!luma(top.u + uu * d, top.v + uv * d, y)) break;
+      ++samples;
+      bright += y >= y_mid - kDarker ? 1 : 0;
+    }
+    return samples >= 2 && bright == samples;
+  });
 }
 
 VisionPipeline::VisionPipeline(const VisionConfig& config, ColourTable table)

@@ -31,7 +31,7 @@ constexpr int kChunk = 256;
 
 // The window, for one way of reading a pixel's luminance (`luma(row, x)`): the taps of a column
 // and of a row are computed once, not once per sample (the coordinates are separable), which
-// made the robot's 32 × 64 window at scale 2.7 about twice as fast; the bytes are the same.
+// made the robot's 32 × 64 window at scale 2.7 1.5× faster; the bytes are the same.
 template <typename Luma>
 void resample_with(const hal::FrameView& frame, double left, double top, double scale, int out_width, int out_height,
                    std::span<std::uint8_t> out, Luma luma) noexcept {
@@ -64,8 +64,8 @@ void resample_with(const hal::FrameView& frame, double left, double top, double 
           const std::uint8_t* r1 = row[static_cast<std::size_t>(2 * a + 1)];
           for (int b = 0; b < taps; ++b) {
             const Tap& cx = c[static_cast<std::size_t>(b)];
-            const int upper = luma(r0, cx.lo) * (256 - cx.weight) + luma(r0, cx.hi) * cx.weight;
-            const int lower = luma(r1, cx.lo) * (256 - cx.weight) + luma(r1, cx.hi) * cx.weight;
+            const int upper = int{luma(r0, cx.lo)} * (256 - cx.weight) + int{luma(r0, cx.hi)} * cx.weight;
+            const int lower = int{luma(r1, cx.lo)} * (256 - cx.weight) + int{luma(r1, cx.hi)} * cx.weight;
             sum += upper * (256 - ry.weight) + lower * ry.weight;
           }
         }
@@ -84,20 +84,20 @@ void resample_luma(const hal::FrameView& frame, double left, double top, double 
       frame.height < 1 || out.size() < static_cast<std::size_t>(out_width) * static_cast<std::size_t>(out_height)) {
     return;
   }
+  // The format is picked once per window, not per read (luma_at's switch cost a robot window
+  // about 20 %: 84 against 67 µs); the lambdas let each instantiation inline its reader.
   switch (frame.format) {
     case hal::PixelFormat::kYuyv:
       resample_with(frame, left, top, scale, out_width, out_height, out,
-                    [](const std::uint8_t* row, int x) { return static_cast<int>(row[2 * static_cast<std::size_t>(x)]); });
+                    [](const std::uint8_t* row, int x) { return yuyv_luma(row, x); });
       return;
     case hal::PixelFormat::kBgr8:
-      resample_with(frame, left, top, scale, out_width, out_height, out, [](const std::uint8_t* row, int x) {
-        const std::uint8_t* p = row + 3 * static_cast<std::size_t>(x);
-        return static_cast<int>(bgr_to_yuv(p[0], p[1], p[2]).y);
-      });
+      resample_with(frame, left, top, scale, out_width, out_height, out,
+                    [](const std::uint8_t* row, int x) { return bgr_luma(row, x); });
       return;
     case hal::PixelFormat::kGray8:
       resample_with(frame, left, top, scale, out_width, out_height, out,
-                    [](const std::uint8_t* row, int x) { return static_cast<int>(row[static_cast<std::size_t>(x)]); });
+                    [](const std::uint8_t* row, int x) { return gray_luma(row, x); });
       return;
   }
 }

@@ -45,7 +45,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
   const int col_stride = std::max(s, (std::max(stride, 1) + s - 1) / s * s);
   const int first = classes.first_row();
   const int h = classes.height();
-  column_count_ = 0;
+  int columns_seen = 0;  // scan columns with an entry in column_foot_
   const auto height_at = [&](double u, double v) {
     const auto p = hal::pixel_to_ground(k, pose, {u, v});
     return p ? expected_height_px(k, pose, *p) : 0.0;
@@ -152,7 +152,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     }
     if (x / col_stride < static_cast<int>(column_foot_.size())) {
       column_foot_[static_cast<std::size_t>(x / col_stride)] = best_foot;
-      column_count_ = x / col_stride + 1;
+      columns_seen = x / col_stride + 1;
     }
     // The open candidate (and a shadow promoted in its place) out of reach ends.
     while (has_open && x - open.x_max > join) close();
@@ -234,7 +234,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
   const auto split_at_edge = [&](const Candidate& c) {
     const int i0 = c.x_min / col_stride;
     const int i1 = c.x_max / col_stride;
-    if (i1 >= column_count_) return false;
+    if (i1 >= columns_seen) return false;
     const double expected_width = expected_width_of(c);
     const int reach = std::max(2, static_cast<int>(0.75 * expected_width / col_stride));
     const int gap = std::max(1, static_cast<int>(params_.join_share * expected_width / col_stride));

@@ -58,16 +58,26 @@ class ClassImage {
   std::vector<std::uint8_t> data_;
 };
 
+/// The luminance of pixel x of one row, per pixel format: what luma_at does after its switch,
+/// for loops that pick the format once (resample.cpp) instead of per pixel.
+[[nodiscard]] inline std::uint8_t yuyv_luma(const std::uint8_t* row, int x) noexcept {
+  return row[2 * static_cast<std::size_t>(x)];
+}
+[[nodiscard]] inline std::uint8_t bgr_luma(const std::uint8_t* row, int x) noexcept {
+  const std::uint8_t* p = row + 3 * static_cast<std::size_t>(x);
+  return bgr_to_yuv(p[0], p[1], p[2]).y;
+}
+[[nodiscard]] inline std::uint8_t gray_luma(const std::uint8_t* row, int x) noexcept {
+  return row[static_cast<std::size_t>(x)];
+}
+
 /// The luminance of pixel (x, y) of a frame (no bounds check).
 [[nodiscard]] inline std::uint8_t luma_at(const hal::FrameView& f, int x, int y) noexcept {
   const std::uint8_t* row = f.data + static_cast<std::size_t>(y) * static_cast<std::size_t>(f.stride);
   switch (f.format) {
-    case hal::PixelFormat::kYuyv: return row[2 * static_cast<std::size_t>(x)];
-    case hal::PixelFormat::kBgr8: {
-      const std::uint8_t* p = row + 3 * static_cast<std::size_t>(x);
-      return bgr_to_yuv(p[0], p[1], p[2]).y;
-    }
-    case hal::PixelFormat::kGray8: return row[x];
+    case hal::PixelFormat::kYuyv: return yuyv_luma(row, x);
+    case hal::PixelFormat::kBgr8: return bgr_luma(row, x);
+    case hal::PixelFormat::kGray8: return gray_luma(row, x);
   }
   return 0;
 }

@@ -143,8 +143,7 @@ class RobotDetector {
   std::size_t count_ = 0;
   std::array<Candidate, kMaxRawRobotCandidates> raw_{};  // before the pieces are joined and judged
   std::size_t raw_count_ = 0;
-  std::array<int, kMaxRobotColumns> column_foot_{};  // each scan column's foot row (-1: none)
-  int column_count_ = 0;
+  std::array<int, kMaxRobotColumns> column_foot_{};  // each scan column's foot row (-1: none), last frame
 
 };
 
