@@ -105,8 +105,10 @@ constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0x2b3a1ae0c646d27a
 // Then the line stage also looks for the penalty and centre marks in what the lines leave over
 // (field_marks.hpp) and the cost model counts that work: the modelled vision cost changed, so the
 // degrade policy acts differently and the policies run's hashes changed (kSplField did not).
-constexpr Golden kSplField{"spl_field.toml (4 s)", 0x16698d7e1ec438d8ULL, 0xb8f3726335394713ULL};
-constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0xc291976d6c4acfbdULL, 0xddf4529db8e45ebdULL};
+// Then each line candidate carries its paint's direction and RANSAC keeps points whose paint runs
+// across a line out of it (issue 10): other lines reach the filter, and both SPL hashes changed.
+constexpr Golden kSplField{"spl_field.toml (4 s)", 0x25679dddeaf8f50aULL, 0x81dc085edeb4925dULL};
+constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x5f456deed60051c2ULL, 0x1add8b9eb0e09857ULL};
 
 // The hybrid controller (planner + arbiter under Navigate): the courtyard's whole mission, and the
 // first 30 s of P&B's test world (the dead end found and planned around) and of the woods.

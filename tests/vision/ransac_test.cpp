@@ -31,6 +31,15 @@ void add_line(std::vector<CandidatePoint>& pts, hal::RobotPoint a, hal::RobotPoi
   }
 }
 
+/// Gives the last n points the paint direction (dx, dy) (unit): an orthographic picture of the
+/// ground, one pixel a centimetre.
+void direct(std::vector<CandidatePoint>& pts, std::size_t n, double dx, double dy) {
+  for (std::size_t i = pts.size() - n; i < pts.size(); ++i) {
+    pts[i].ground_along = {0.01 * dx, 0.01 * dy};
+    pts[i].ground_across = {-0.01 * dy, 0.01 * dx};
+  }
+}
+
 void add_outliers(std::vector<CandidatePoint>& pts, int n, SplitMix64& rng) {
   for (int i = 0; i < n; ++i) {
     const double x = 0.5 + static_cast<double>(rng.below(4000)) / 1000.0;
@@ -469,6 +478,99 @@ TEST(Ransac, CircleStageLeavesNearbyLinesAlone) {
   }
   EXPECT_EQ(found, 3) << describe(out);
   EXPECT_EQ(out.count, 3U) << describe(out);
+}
+
+}  // namespace
+}  // namespace ringlet::vision
+
+namespace ringlet::vision {
+namespace {
+
+// Where one line's paint crosses another's band (a corner, a T, a line past a robot's feet), its
+// points lie in the band but run across it. The direction gate keeps them out: the line keeps its
+// own direction and extent and is not taken for an arc. Without the gate they join it.
+TEST(Ransac, PaintCrossingALinesBandStaysOutOfIt) {
+  const auto scene = [] {
+    SplitMix64 rng(5);
+    std::vector<CandidatePoint> pts;
+    add_line(pts, {1.2, 0.0}, {1.6, 0.0}, 40, rng, 0.003);
+    direct(pts, 40, 1.0, 0.0);
+    add_line(pts, {0.95, -0.05}, {0.95, 0.05}, 12, rng, 0.003);  // 0.25 m before it, across
+    direct(pts, 12, 0.0, 1.0);
+    return pts;
+  }();
+  const LineSet out = run(scene, {});
+  ASSERT_EQ(out.count, 1U) << describe(out);
+  EXPECT_TRUE(matches(out.lines[0], {1.2, 0.0}, {1.6, 0.0}, 0.01)) << describe(out);
+  EXPECT_GT(std::min(out.lines[0].ground_start.x, out.lines[0].ground_end.x), 1.15) << describe(out);
+  EXPECT_EQ(out.stats.arcs_rejected, 0);
+
+  RansacParams ungated;
+  ungated.max_direction_deg = 0.0;
+  const LineSet joined = run(scene, ungated);
+  const bool extended = joined.count == 1 && std::min(joined.lines[0].ground_start.x, joined.lines[0].ground_end.x) < 1.0;
+  EXPECT_TRUE(extended || joined.count == 0) << "without the gate:" << describe(joined);
+}
+
+// A far circle's near side: the picture fixes each point's bearing well and its range poorly, so
+// noise along the ray hides the bend the chunks are judged on. When the members' paint was seen
+// to follow the circle's tangent (the line rounds' tangent test), their coverage stands for the
+// curvature; a straight line's points in the band still fit one line better than the circle.
+TEST(Ransac, AFarArcIsJudgedOnItsTangentsWhenItsBendIsLostInNoise) {
+  const CircleParams params;
+  ArcScratch scratch(4096);
+  int tangent_seen = 0, bend_seen = 0, cases = 0;
+  for (const double from_deg : {140.0, 150.0, 160.0}) {
+    SplitMix64 rng(static_cast<std::uint64_t>(from_deg));
+    const hal::RobotPoint centre{4.5, 0.4};
+    std::vector<hal::RobotPoint> pts;
+    std::vector<int> members;
+    for (int i = 0; i < 50; ++i) {
+      const double a = (from_deg + 60.0 * (i + 0.5) / 50.0) * std::numbers::pi / 180.0;
+      const hal::RobotPoint q{centre.x + 0.75 * std::cos(a), centre.y + 0.75 * std::sin(a)};
+      const double range = std::hypot(q.x, q.y);
+      const double e = (static_cast<double>(rng.below(2001)) / 1000.0 - 1.0) * 0.018;
+      pts.push_back({q.x * (1.0 + e / range), q.y * (1.0 + e / range)});
+      members.push_back(i);
+    }
+    ++cases;
+    const Circle2 circle{centre, 0.75};
+    tangent_seen += CentreCircleFinder::judge(circle, pts, members, params, scratch, true).seen ? 1 : 0;
+    bend_seen += CentreCircleFinder::judge(circle, pts, members, params, scratch, false).seen ? 1 : 0;
+  }
+  EXPECT_EQ(tangent_seen, cases);
+  EXPECT_LT(bend_seen, cases);
+
+  // A straight line touching the circle: the points in its band cover ~50° of it.
+  std::vector<hal::RobotPoint> line;
+  std::vector<int> members;
+  for (int i = 0; i < 60; ++i) {
+    const double y = -0.35 + 0.7 * (i + 0.5) / 60.0;
+    const hal::RobotPoint q{3.75, 0.4 + y};
+    if (std::abs(std::hypot(q.x - 4.5, q.y - 0.4) - 0.75) > 0.04) continue;
+    members.push_back(static_cast<int>(line.size()));
+    line.push_back(q);
+  }
+  ASSERT_GE(members.size(), 12U);
+  EXPECT_FALSE(CentreCircleFinder::judge({{4.5, 0.4}, 0.75}, line, members, params, scratch, true).seen);
+}
+
+// Two lines of a corner, each short enough for the tangent test: a circle nestled in the corner
+// touches both and their paint passes the direction gate near the touching points, but it does
+// not follow the circle's tangent. Two lines, no circle.
+TEST(Ransac, TheLinesOfACornerMakeNoCircle) {
+  SplitMix64 rng(9);
+  for (const double arm : {0.4, 0.6, 0.9}) {
+    std::vector<CandidatePoint> pts;
+    const int n = static_cast<int>(arm / 0.01);
+    add_line(pts, {1.5, 0.0}, {1.5 + arm, 0.0}, n, rng, 0.01);
+    direct(pts, static_cast<std::size_t>(n), 1.0, 0.0);
+    add_line(pts, {1.5, 0.0}, {1.5, arm}, n, rng, 0.01);
+    direct(pts, static_cast<std::size_t>(n), 0.0, 1.0);
+    const LineSet out = run(pts, {}, static_cast<std::uint64_t>(arm * 10));
+    EXPECT_FALSE(out.circle.seen) << arm;
+    EXPECT_EQ(out.count, 2U) << arm << ":" << describe(out);
+  }
 }
 
 }  // namespace

@@ -49,6 +49,11 @@ ArcCoverage arc_coverage(const Circle2& c, std::span<const hal::RobotPoint> poin
     out.bins += occupied[static_cast<std::size_t>(b)] ? 1 : 0;
   }
   if (out.bins == 0) return out;
+  // Around the circle: a run may cross ±180° (the near side of a circle ahead does).
+  for (int b = 0, run = 0; b < 2 * kBins; ++b) {
+    run = count[static_cast<std::size_t>(b % kBins)] > 0 ? run + 1 : 0;
+    out.longest_run = std::max(out.longest_run, std::min(run, kBins));
+  }
   // Members in angle order, so that a chunk of bins is a contiguous range of indices.
   scratch.order.clear();
   for (const int m : members) scratch.order.emplace_back(bin_of(c, points[static_cast<std::size_t>(m)]), m);
@@ -123,7 +128,7 @@ std::optional<Circle2> refine_centre_circle(const Circle2& start, std::span<cons
 
 CentreCircle CentreCircleFinder::judge(const Circle2& circle, std::span<const hal::RobotPoint> points,
                                        std::span<const int> members, const CircleParams& params,
-                                       ArcScratch& scratch) noexcept {
+                                       ArcScratch& scratch, bool tangent_members) noexcept {
   CentreCircle out;
   out.centre = circle.centre;
   out.radius_m = circle.radius;
@@ -132,12 +137,21 @@ CentreCircle CentreCircleFinder::judge(const Circle2& circle, std::span<const ha
   const ArcCoverage cov = arc_coverage(circle, points, members, params, scratch);
   out.coverage_deg = cov.bins * 10.0;
   const bool radius_ok = std::abs(circle.radius - params.radius_m) <= params.radius_tolerance * params.radius_m;
-  const bool curved = cov.curved_bins * 10.0 >= params.min_coverage_deg && cov.curved_bins > cov.straight_bins;
+  const int curved_bins = tangent_members ? cov.bins : cov.curved_bins;
+  bool curved = curved_bins * 10.0 >= params.min_coverage_deg;
+  if (curved && tangent_members) {
+    const IndexedPoints all{points, members};
+    const auto line = fit_line_tls(all);
+    curved = cov.longest_run * 10.0 >= params.min_coverage_deg &&
+             (!line || out.rms_m < params.tangent_rms_ratio * line_rms(*line, all));
+  } else if (curved) {
+    curved = cov.curved_bins > cov.straight_bins;
+  }
   const bool hugs = out.rms_m <= params.max_rms_ratio * params.band_m ||
                     (out.coverage_deg >= params.wide_arc_deg && out.rms_m <= params.wide_arc_rms_ratio * params.band_m);
   out.seen = radius_ok && curved && hugs && out.inliers >= params.min_inliers;
   if (out.seen) {
-    const double coverage = std::min(1.0, cov.curved_bins * 10.0 / 180.0);
+    const double coverage = std::min(1.0, curved_bins * 10.0 / 180.0);
     const double count = std::min(1.0, out.inliers / 40.0);
     const double fit = std::clamp(1.0 - out.rms_m / params.band_m, 0.0, 1.0);
     out.confidence = coverage * count * fit;

@@ -18,13 +18,17 @@ CostModel default_cost_model() noexcept {
   // bench's 32x64 window at scale 2.7): the quieter run's 30 and 100 us were taken uncorrected.
   // Since the window's taps are computed once per row and column (resample.cpp) they measure
   // 24.7 and 66.7 us on an idle host (load 0.8, BM_HogClassify, median of 3; before: 29.5 and
-  // 99.6 us in the same conditions), taken as 25 and 67 us.
+  // 99.6 us in the same conditions), taken as 25 and 67 us. Each candidate's paint direction (four
+  // Sobels across its run's edges, one back-projection; scan_points.cpp) added 8 us for the 779
+  // candidates (BM_ScanPoints/2/1 354 -> 362 us, idle host, median of 3): 10 ns more per
+  // candidate. RANSAC's direction gate did not cost more (BM_Ransac 106 -> 103 us: its per-point
+  // tests are inlined now).
   CostModel m;
   m.fixed_ns = 10'000.0;
   m.per_classified_pixel_ns = 0.63;
   m.per_ball_sample_ns = 2.8;
   m.per_scanned_pixel_ns = 0.95;
-  m.per_candidate_ns = 25.0;
+  m.per_candidate_ns = 35.0;
   m.per_point_test_ns = 10.0;
   m.per_colour_sample_ns = 7.0;
   m.per_colour_rebuild_ns = 31'000.0;

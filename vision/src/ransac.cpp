@@ -38,6 +38,8 @@ bool on_circle(const CentreCircle& c, const hal::RobotPoint& q, double band) noe
 RansacScratch::RansacScratch(std::size_t capacity) : arc_scratch_(capacity) {
   points_.reserve(capacity);
   pixels_.reserve(capacity);
+  along_.reserve(capacity);
+  across_.reserve(capacity);
   pool_.reserve(capacity);
   sample_.reserve(capacity);
   inliers_.reserve(capacity);
@@ -47,8 +49,27 @@ RansacScratch::RansacScratch(std::size_t capacity) : arc_scratch_(capacity) {
   order_.reserve(capacity);
 }
 
-double RansacLineFinder::tolerance(const hal::RobotPoint& p) const noexcept {
-  return params_.inlier_base_m + params_.inlier_per_m * norm(p.x, p.y);
+double RansacLineFinder::direction_tan(double max_deg) noexcept {
+  return max_deg > 0.0 ? std::tan(max_deg * std::numbers::pi / 180.0) : -1.0;
+}
+
+double RansacLineFinder::tangent_rms(const CentreCircle& c, std::span<const int> members) const noexcept {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const int p : members) {
+    const auto i = static_cast<std::size_t>(p);
+    const hal::RobotPoint& q = scratch_.points_[i];
+    const double dx = q.x - c.centre.x, dy = q.y - c.centre.y;
+    const double r = norm(dx, dy);
+    if (r <= 0.0 || !has_direction(p)) continue;
+    const double hx = -dy / r, hy = dx / r;  // the tangent
+    const hal::RobotPoint& u = scratch_.along_[i];
+    const hal::RobotPoint& v = scratch_.across_[i];
+    const double t = std::abs(u.x * hy - u.y * hx) / std::max(std::abs(hx * v.y - hy * v.x), 1e-12);
+    sum += t * t;
+    ++n;
+  }
+  return n == 0 ? 0.0 : std::sqrt(sum / static_cast<double>(n));
 }
 
 void RansacLineFinder::remove_from_pool(std::span<const int> members) noexcept {
@@ -70,6 +91,8 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
   auto& s = scratch_;
   s.points_.clear();
   s.pixels_.clear();
+  s.along_.clear();
+  s.across_.clear();
   s.pool_.clear();
   const auto skip = static_cast<std::size_t>(std::max(skip_override >= 1 ? skip_override : params_.skip, 1));
   for (std::size_t i = 0; i < candidates.size() && s.points_.size() < s.points_.capacity(); ++i) {
@@ -83,6 +106,8 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
     s.pool_.push_back(static_cast<int>(s.points_.size()));
     s.points_.push_back(q);
     s.pixels_.push_back(candidates[i].pixel);
+    s.along_.push_back(candidates[i].ground_along);
+    s.across_.push_back(candidates[i].ground_across);
   }
   st.points_in = static_cast<int>(candidates.size());
   const int trials = max_trials >= 0 ? max_trials : params_.max_trials;
@@ -90,6 +115,10 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
   const auto min_inliers = static_cast<std::size_t>(std::max(params_.min_inliers, 2));
   const auto min_sampled = static_cast<std::size_t>(std::max(params_.min_sampled_inliers, 2));
   SplitMix64 rng = SplitMix64::for_frame(params_.seed, frame);
+  // A point belongs to a line when it lies in its band and its paint runs along it (or its
+  // direction is unknown).
+  const double max_tan = direction_tan(params_.max_direction_deg);
+  const auto fits = [&](const Line2& l, int p) { return in_band(l, p) && along_paint(l, p, max_tan); };
 
   int rounds = 0;
   while (rounds < rounds_cap && s.pool_.size() >= min_inliers) {
@@ -121,10 +150,7 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
       if (len < 1e-6) continue;
       const Line2 hypothesis{a, (b.x - a.x) / len, (b.y - a.y) / len};
       std::size_t count = 0;
-      for (const int p : s.sample_) {
-        const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
-        if (std::abs(hypothesis.signed_distance(q)) <= tolerance(q)) ++count;
-      }
+      for (const int p : s.sample_) count += fits(hypothesis, p) ? 1U : 0U;
       if (count > best) {
         best = count;
         best_line = hypothesis;
@@ -137,8 +163,7 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
     const auto collect = [&](const Line2& l) {
       s.inliers_.clear();
       for (const int p : s.pool_) {
-        const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
-        if (std::abs(l.signed_distance(q)) <= tolerance(q)) s.inliers_.push_back(p);
+        if (fits(l, p)) s.inliers_.push_back(p);
       }
     };
     // From here on every candidate counts: the fit, the endpoints and the gaps are dense.
@@ -235,39 +260,74 @@ bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece,
       if (lrms >= params_.circle_min_line_rms_m && circle_rms(*kasa, arc) < params_.circle_rms_ratio * lrms) circle = kasa;
     }
   }
-  if (!circle) {
+  if (out.circle.seen) {
+    if (circle) return true;  // an arc, but of no better circle than the known one
     --out.stats.arcs_rejected;
     return false;
   }
-  if (out.circle.seen) return true;  // an arc, but of no better circle than the known one
-
-  // An arc and no circle yet. Take every remaining point on that circle and refit, until the set
-  // stops growing; report it when it passes the centre circle's judgement.
-  s.arc_.assign(piece.begin(), piece.end());
-  std::sort(s.arc_.begin(), s.arc_.end());
-  const auto gather = [&](const Circle2& c) {
-    s.circle_members_.clear();
-    for (const int p : s.pool_) {
-      const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
-      const bool near = std::abs(norm(q.x - c.centre.x, q.y - c.centre.y) - c.radius) <= tolerance(q);
-      if (near || std::binary_search(s.arc_.begin(), s.arc_.end(), p)) s.circle_members_.push_back(p);
+  // Refits c on the members `gather` collects until they stop growing, then judges it; a circle
+  // that passes is the frame's, and its members leave the pool.
+  const auto refine_and_judge = [&](Circle2 c, const auto& gather, bool tangent_members) {
+    gather(c);
+    for (int iteration = 0; iteration < 3; ++iteration) {
+      const std::size_t before = s.circle_members_.size();
+      const auto all = refine_centre_circle(c, s.points_, s.circle_members_, cp, s.arc_scratch_);
+      if (!all) break;
+      c = *all;
+      gather(c);
+      if (s.circle_members_.size() <= before) break;
     }
+    return CentreCircleFinder::judge(c, s.points_, s.circle_members_, cp, s.arc_scratch_, tangent_members);
   };
-  gather(*circle);
-  for (int iteration = 0; iteration < 3; ++iteration) {
-    const std::size_t before = s.circle_members_.size();
-    const auto all = refine_centre_circle(*circle, s.points_, s.circle_members_, cp, s.arc_scratch_);
-    if (!all) break;
-    circle = all;
-    gather(*circle);
-    if (s.circle_members_.size() <= before) break;
-  }
-  const CentreCircle judged = CentreCircleFinder::judge(*circle, s.points_, s.circle_members_, cp, s.arc_scratch_);
-  if (judged.seen) {
+  const auto accept = [&](const CentreCircle& judged) {
     out.circle = judged;
     remove_from_pool(s.circle_members_);
+  };
+  if (circle) {
+    // An arc and no circle yet: every remaining point on that circle, and the piece's own.
+    s.arc_.assign(piece.begin(), piece.end());
+    std::sort(s.arc_.begin(), s.arc_.end());
+    const auto gather = [&](const Circle2& c) {
+      s.circle_members_.clear();
+      for (const int p : s.pool_) {
+        const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
+        const bool near = std::abs(norm(q.x - c.centre.x, q.y - c.centre.y) - c.radius) <= tolerance(q);
+        if (near || std::binary_search(s.arc_.begin(), s.arc_.end(), p)) s.circle_members_.push_back(p);
+      }
+    };
+    if (const CentreCircle judged = refine_and_judge(*circle, gather, false); judged.seen) accept(judged);
+    return true;
   }
-  return true;
+  // No bend shows: a short piece of a far circle looks straight. It is an arc only if the circle
+  // it touches (r0 to either side of its middle) is there: points in its band whose paint runs
+  // along its tangent, over enough of its arc to pass the judgement. Their paint must follow the
+  // tangent as closely as directions are measured: the lines of a corner that a circle nestles
+  // in pass the gate only with their paint up to its limit.
+  const hal::RobotPoint middle = line.at((t_min + t_max) / 2.0);
+  if (t_max - t_min <= params_.tangent_circle_max_m && norm(middle.x, middle.y) >= params_.tangent_circle_min_range_m) {
+    const double max_tan = direction_tan(params_.max_direction_deg);
+    const double max_rms_tan = std::tan(params_.tangent_max_rms_deg * std::numbers::pi / 180.0);
+    const auto tangent_gather = [&](const Circle2& c) {
+      s.circle_members_.clear();
+      for (const int p : s.pool_) {
+        const hal::RobotPoint& q = s.points_[static_cast<std::size_t>(p)];
+        const double dx = q.x - c.centre.x, dy = q.y - c.centre.y;
+        const double r = norm(dx, dy);
+        if (std::abs(r - c.radius) > tolerance(q) || r <= 0.0 || !has_direction(p)) continue;
+        if (along_paint(Line2{q, -dy / r, dx / r}, p, max_tan)) s.circle_members_.push_back(p);
+      }
+    };
+    for (const double side : {1.0, -1.0}) {
+      const Circle2 touching{{middle.x - line.dy * side * r0, middle.y + line.dx * side * r0}, r0};
+      const CentreCircle judged = refine_and_judge(touching, tangent_gather, true);
+      if (judged.seen && tangent_rms(judged, s.circle_members_) <= max_rms_tan) {
+        accept(judged);
+        return true;
+      }
+    }
+  }
+  --out.stats.arcs_rejected;
+  return false;
 }
 
 double RansacLineFinder::min_support(const Line2& line, double t0, double t1, const LineCheck* check) const noexcept {

@@ -51,6 +51,13 @@ struct CircleParams {
   double band_m = 0.04;                  // inlier band of the refined circle (the lines' tolerance)
   int min_inliers = 12;
   double min_coverage_deg = 50.0;        // curved arc needed, in 10° bins of ≥ 2 points
+  double tangent_rms_ratio = 0.6;        // judged on its points' tangents (a far circle): a
+                                         //   straight line's points cover up to ~50° of the band
+                                         //   with their paint near the tangent, so the members
+                                         //   must also fit the circle better than one line: RMS
+                                         //   below this × their line fit's, and cover one
+                                         //   unbroken arc of min_coverage_deg (two lines of a
+                                         //   corner touch a circle in two places)
   double free_radius_coverage_deg = 120.0;  // below this much arc the radius is held at r0
   double max_rms_ratio = 0.3;            // the inliers hug the circle: RMS ≤ this × band_m, or
   double wide_arc_deg = 120.0;           //   with at least this much arc seen,
@@ -85,6 +92,7 @@ struct ArcCoverage {
   int bins = 0;           // 10° bins holding ≥ 2 points
   int curved_bins = 0;    // of those, in chunks that bend like the circle
   int straight_bins = 0;  // ... in chunks that are straight (a line touching the band)
+  int longest_run = 0;    // the most consecutive bins holding any point, around the circle
 };
 
 /// Storage arc_coverage() sorts members in, reserved once for a capacity.
@@ -109,9 +117,12 @@ class CentreCircleFinder {
 
   /// Judges `circle` on the points `members` of `points` (indices): coverage, curvature, RMS, and
   /// fills confidence (0 when refused). Used for the circle the line rounds find too.
+  /// `tangent_members`: every member's paint was seen to run along the circle's tangent, which
+  /// shows the curve where the positions are too noisy to (a far circle): the arc's coverage
+  /// then stands for its curvature.
   [[nodiscard]] static CentreCircle judge(const Circle2& circle, std::span<const hal::RobotPoint> points,
                                           std::span<const int> members, const CircleParams& params,
-                                          ArcScratch& scratch) noexcept;
+                                          ArcScratch& scratch, bool tangent_members = false) noexcept;
 
   [[nodiscard]] const CircleParams& params() const noexcept { return params_; }
 

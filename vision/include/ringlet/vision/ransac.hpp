@@ -6,6 +6,7 @@
 // reported as short straight lines. All geometry is on the ground (robot frame), where a tolerance
 // in metres means the same thing near and far.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -34,6 +35,9 @@ struct RansacParams {
   double inlier_base_m = 0.04;       // inlier tolerance = base + per_m × range of the point. The
   double inlier_per_m = 0.0;         //   range term is off by default: 0.015/m let far bands swallow
                                      //   clutter and neighbouring lines (F1 −0.08 in the evaluation)
+  double max_direction_deg = 20.0;   // a point whose paint runs more than this off the line in the
+                                     //   picture (its run's edges tell) is no inlier: where two
+                                     //   lines meet or cross, the other's points stay out; 0: off
   double min_length_m = 0.15;        // shorter pieces are dropped
   double min_support = 0.45;         // inliers per scan line the piece's image crosses (its image
                                      //   length / scan stride): a painted line yields a candidate
@@ -54,6 +58,12 @@ struct RansacParams {
   double circle_min_line_rms_m = 0.008;  //   the line fit's RMS above this (visible curvature)
   double arc_min_bend_z = 2.5;       // an arc (bend test): the piece bends from its chord by more than
                                      //   half the circle's curvature, this many standard errors from 0
+  double tangent_circle_max_m = 1.0; // a straight piece this short may still touch a far circle:
+                                     //   the circle r0 to either side is gathered (points whose
+                                     //   paint runs along its tangent) and judged
+  double tangent_circle_min_range_m = 2.0;  // ... and this far away (nearer, the bend shows)
+  double tangent_max_rms_deg = 9.5;  //   and its points' paint must follow the tangent this
+                                     //   closely (RMS): lines of a corner pass only the gate
   double arc_near_share = 0.5;       // a piece with this share of its points within twice the
                                      //   tolerance of the known circle is part of it
   std::uint64_t seed = 0x52494E474C4554ULL;  // "RINGLET"; per frame: SplitMix64::for_frame
@@ -101,6 +111,8 @@ class RansacScratch {
   friend class RansacLineFinder;
   std::vector<hal::RobotPoint> points_;   // used points (ground)
   std::vector<hal::Pixel> pixels_;        // their image positions
+  std::vector<hal::RobotPoint> along_;    // their paint's direction (CandidatePoint::ground_along
+  std::vector<hal::RobotPoint> across_;   //   and ground_across; {0, 0}: unknown)
   std::vector<int> pool_;                 // indices still unassigned (every candidate)
   std::vector<int> sample_;               // every skip-th index of pool_: the RANSAC trials' points
   std::vector<int> inliers_;
@@ -129,7 +141,32 @@ class RansacLineFinder {
   [[nodiscard]] const RansacParams& params() const noexcept { return params_; }
 
  private:
-  [[nodiscard]] double tolerance(const hal::RobotPoint& p) const noexcept;
+  // The per-point tests run for every point of every trial: defined here, to be inlined.
+  [[nodiscard]] double tolerance(const hal::RobotPoint& p) const noexcept {
+    return params_.inlier_per_m == 0.0 ? params_.inlier_base_m
+                                       : params_.inlier_base_m + params_.inlier_per_m * std::sqrt(p.x * p.x + p.y * p.y);
+  }
+  [[nodiscard]] static double direction_tan(double max_deg) noexcept;  // < 0: no gate
+  [[nodiscard]] bool in_band(const Line2& l, int p) const noexcept {
+    const hal::RobotPoint& q = scratch_.points_[static_cast<std::size_t>(p)];
+    return std::abs(l.signed_distance(q)) <= tolerance(q);
+  }
+  [[nodiscard]] bool has_direction(int p) const noexcept {
+    const hal::RobotPoint& u = scratch_.along_[static_cast<std::size_t>(p)];
+    return u.x != 0.0 || u.y != 0.0;
+  }
+  /// RMS over `members` of the tangent of the angle, in the picture, between their paint and
+  /// the circle's tangent.
+  [[nodiscard]] double tangent_rms(const CentreCircle& c, std::span<const int> members) const noexcept;
+  /// Point p's paint runs within atan(max_tan) of l in the picture (or its direction is unknown).
+  [[nodiscard]] bool along_paint(const Line2& l, int p, double max_tan) const noexcept {
+    // The line's direction h = α·along + β·across; in the picture it runs at atan|β/α| =
+    // atan(|along × h| / |h × across|) to the paint.
+    if (max_tan < 0.0 || !has_direction(p)) return true;
+    const hal::RobotPoint& u = scratch_.along_[static_cast<std::size_t>(p)];
+    const hal::RobotPoint& v = scratch_.across_[static_cast<std::size_t>(p)];
+    return std::abs(u.x * l.dy - u.y * l.dx) <= max_tan * std::abs(l.dx * v.y - l.dy * v.x);
+  }
   /// The arc test of one piece; true (and the circle updated) when it is part of the circle.
   bool try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept;
   /// The support the piece [t0, t1] of `line` needs: thin_min_support where its paint is thin in

@@ -25,6 +25,8 @@ struct ScanParams {
   double max_width_factor = 3.0;    // runs wider than this × expected are robots / white blobs
   double min_width_factor = 0.3;    // runs narrower than this × expected are noise
   double width_slack_px = 2.0;      // added to both bounds (+ the class step): edge pixels
+  double min_coherence = 0.3;       // the run's edges give the line's direction when their
+                                    // gradients agree this well (structure-tensor coherence)
 };
 
 enum class ScanDirection : std::uint8_t { kVertical, kHorizontal };
@@ -34,6 +36,11 @@ struct CandidatePoint {
   hal::RobotPoint ground{};    // where it lies on the ground, robot frame
   float width_px = 0.0F;       // the run's extent along the scan line
   ScanDirection direction = ScanDirection::kVertical;
+  // The paint's direction in the picture there, from the run's edges, as the ground vectors one
+  // pixel along it and one pixel across it span: a ground direction h = α·along + β·across runs
+  // at atan(|β/α|) to the paint in the picture. Both {0, 0}: not known.
+  hal::RobotPoint ground_along{};
+  hal::RobotPoint ground_across{};
 };
 
 /// A fixed-capacity list of candidates: storage allocated at construction, push refuses (and
