@@ -376,6 +376,38 @@ TEST(FieldColour, PaleFieldChromaIsFieldOnlyInShade) {
   }
 }
 
+// Sun scales the carpet's chroma with its brightness: in rendered daylight frames (val_s101 frame
+// 1049) shaded carpet at (Y 87, U 107, V 121) lay beside sunlit stripes at (Y 200, U 66, V 118),
+// 2.8 times the shade's chroma. Beyond the cone's old end (2.5) the stripes were "other": a line
+// crossing them had no field on either side, and the robots' candidates ran into them.
+TEST(FieldColour, SunlitCarpetWithAlmostThreeTimesTheShadesChromaIsField) {
+  const int w = 640, h = 480;
+  const auto sunlit = [](int, int y) { return y >= 180 && y < 300; };  // cell rows 3 and 4
+  const testing::Frame f = two_surfaces({87, 107, 121, 3, 1}, {200, 66, 118, 3, 1}, sunlit);
+  const std::vector<int> rows(static_cast<std::size_t>(w), 0);
+  const FieldColourEstimate e = FieldColourEstimator::measure(f.view, rows, {});
+  ASSERT_TRUE(e.valid);
+  EXPECT_NEAR(e.y, 87, 3) << "the shade covers most of the view";
+  const int cell = 3 * kColourCellsX + 2;
+  ASSERT_NE((e.field_cells >> cell) & 1U, 0U) << "the sunlit cells hold field";
+  EXPECT_NEAR(e.cell_y[static_cast<std::size_t>(cell)], 200, 6) << "their carpet is the sunlit one";
+  AdaptiveClassifier adaptive;
+  adaptive.build(e, w, h);
+  EXPECT_EQ(adaptive.classify(200, 66, 118, cell), ColourClass::kField);
+  EXPECT_EQ(adaptive.classify(250, 126, 127, cell), ColourClass::kLine) << "paint in the sun";
+  EXPECT_EQ(adaptive.classify(87, 107, 121, 0), ColourClass::kField);
+  // The cone still ends: chroma four times the field's (a saturated green board) is not carpet.
+  EXPECT_EQ(adaptive.classify(200, 44, 100, cell), ColourClass::kOther);
+  EXPECT_EQ(adaptive.classify(200, 66, 118, cell), adaptive.classify_by_comparison(200, 66, 118, cell));
+
+  // With the cone ending at 2.5, as before, the same stripes were no field.
+  AdaptiveColourParams old;
+  old.cone_t_max = 2.5;
+  const FieldColourEstimate e_old = FieldColourEstimator::measure(f.view, rows, old);
+  ASSERT_TRUE(e_old.valid);
+  EXPECT_EQ((e_old.field_cells >> cell) & 1U, 0U);
+}
+
 // An estimate of uniform field luminance `y` and luminance spread `spread` over every cell.
 AdaptiveClassifier classifier_for(int y, int spread) {
   FieldColourEstimate e;

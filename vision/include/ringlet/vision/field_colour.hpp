@@ -64,7 +64,7 @@ struct AdaptiveColourParams {
   int chroma_tolerance_max = 12;
   double chroma_tolerance_k = 2.0;
   double cone_t_min = 0.35;
-  double cone_t_max = 2.5;
+  double cone_t_max = 3.0;           // sunlit carpet: 2.8 × the shade's chroma seen (2.5 left it "other")
   double cone_slope = 0.2;
   // Shade scales chroma with brightness (t ≈ Y / field Y). Field chroma paler than pale_t of the
   // field's (grey with a tint: a ball's white, a robot's shell, bluish white balance) is field only
