@@ -311,12 +311,16 @@ testing::Frame two_surfaces(const Surface& a, const Surface& b, Pick second) {
   return f;
 }
 
+// The estimate of a frame whose every column is ground from the top row down.
+FieldColourEstimate estimate_below_row_0(const testing::Frame& f, const AdaptiveColourParams& params = {}) {
+  const std::vector<int> rows(static_cast<std::size_t>(f.view.width), 0);
+  return FieldColourEstimator::measure(f.view, rows, params);
+}
+
 TEST(FieldColour, DullCarpetBesideMoreGreyIsStillTheField) {
-  const int w = 640;
   // The carpet below row 300: 37.5 % of the view.
   const testing::Frame f = two_surfaces({125, 127, 129, 3, 2}, {100, 118, 124, 3, 2}, [](int, int y) { return y >= 300; });
-  const std::vector<int> rows(static_cast<std::size_t>(w), 0);
-  const FieldColourEstimate e = FieldColourEstimator::measure(f.view, rows, {});
+  const FieldColourEstimate e = estimate_below_row_0(f);
   ASSERT_TRUE(e.valid);
   EXPECT_NEAR(e.u, 118, 2);
   EXPECT_NEAR(e.v, 124, 2);
@@ -334,8 +338,7 @@ TEST(FieldColour, AWideLineFillingACellIsNotThatCellsCarpet) {
   // Field chroma (-28, -4); the paint's (-31, +1) is within the field's cone.
   const testing::Frame f = two_surfaces({100, 100, 124, 3, 1}, {220, 97, 129, 3, 1},
                                         [](int x, int y) { return x >= 244 && x < 304 && y >= 360 && y < 420; });
-  const std::vector<int> rows(static_cast<std::size_t>(w), 0);
-  const FieldColourEstimate e = FieldColourEstimator::measure(f.view, rows, {});
+  const FieldColourEstimate e = estimate_below_row_0(f);
   ASSERT_TRUE(e.valid);
   const int cell = 6 * kColourCellsX + 3;
   ASSERT_NE((e.field_cells >> cell) & 1U, 0U) << "the paint's samples still count as field there";
@@ -384,8 +387,7 @@ TEST(FieldColour, SunlitCarpetWithAlmostThreeTimesTheShadesChromaIsField) {
   const int w = 640, h = 480;
   const auto sunlit = [](int, int y) { return y >= 180 && y < 300; };  // cell rows 3 and 4
   const testing::Frame f = two_surfaces({87, 107, 121, 3, 1}, {200, 66, 118, 3, 1}, sunlit);
-  const std::vector<int> rows(static_cast<std::size_t>(w), 0);
-  const FieldColourEstimate e = FieldColourEstimator::measure(f.view, rows, {});
+  const FieldColourEstimate e = estimate_below_row_0(f);
   ASSERT_TRUE(e.valid);
   EXPECT_NEAR(e.y, 87, 3) << "the shade covers most of the view";
   const int cell = 3 * kColourCellsX + 2;
@@ -403,7 +405,7 @@ TEST(FieldColour, SunlitCarpetWithAlmostThreeTimesTheShadesChromaIsField) {
   // With the cone ending at 2.5, as before, the same stripes were no field.
   AdaptiveColourParams old;
   old.cone_t_max = 2.5;
-  const FieldColourEstimate e_old = FieldColourEstimator::measure(f.view, rows, old);
+  const FieldColourEstimate e_old = estimate_below_row_0(f, old);
   ASSERT_TRUE(e_old.valid);
   EXPECT_EQ((e_old.field_cells >> cell) & 1U, 0U);
 }

@@ -49,9 +49,9 @@ RansacScratch::RansacScratch(std::size_t capacity) : arc_scratch_(capacity) {
   order_.reserve(capacity);
 }
 
-double RansacLineFinder::direction_tan(double max_deg) noexcept {
-  return max_deg > 0.0 ? std::tan(max_deg * std::numbers::pi / 180.0) : -1.0;
-}
+double RansacLineFinder::tan_deg(double deg) noexcept { return std::tan(deg * std::numbers::pi / 180.0); }
+
+double RansacLineFinder::direction_tan(double max_deg) noexcept { return max_deg > 0.0 ? tan_deg(max_deg) : -1.0; }
 
 double RansacLineFinder::tangent_rms(const CentreCircle& c, std::span<const int> members) const noexcept {
   double sum = 0.0;
@@ -62,10 +62,8 @@ double RansacLineFinder::tangent_rms(const CentreCircle& c, std::span<const int>
     const double dx = q.x - c.centre.x, dy = q.y - c.centre.y;
     const double r = norm(dx, dy);
     if (r <= 0.0 || !has_direction(p)) continue;
-    const double hx = -dy / r, hy = dx / r;  // the tangent
-    const hal::RobotPoint& u = scratch_.along_[i];
-    const hal::RobotPoint& v = scratch_.across_[i];
-    const double t = std::abs(u.x * hy - u.y * hx) / std::max(std::abs(hx * v.y - hy * v.x), 1e-12);
+    const PaintOffset o = paint_offset(-dy / r, dx / r, p);  // against the tangent
+    const double t = o.off / std::max(o.on, 1e-12);
     sum += t * t;
     ++n;
   }
@@ -117,8 +115,7 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
   SplitMix64 rng = SplitMix64::for_frame(params_.seed, frame);
   // A point belongs to a line when it lies in its band and its paint runs along it (or its
   // direction is unknown).
-  const double max_tan = direction_tan(params_.max_direction_deg);
-  const auto fits = [&](const Line2& l, int p) { return in_band(l, p) && along_paint(l, p, max_tan); };
+  const auto fits = [&](const Line2& l, int p) { return in_band(l, p) && along_paint(l, p, max_direction_tan_); };
 
   int rounds = 0;
   while (rounds < rounds_cap && s.pool_.size() >= min_inliers) {
@@ -305,8 +302,6 @@ bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece,
   // in pass the gate only with their paint up to its limit.
   const hal::RobotPoint middle = line.at((t_min + t_max) / 2.0);
   if (t_max - t_min <= params_.tangent_circle_max_m && norm(middle.x, middle.y) >= params_.tangent_circle_min_range_m) {
-    const double max_tan = direction_tan(params_.max_direction_deg);
-    const double max_rms_tan = std::tan(params_.tangent_max_rms_deg * std::numbers::pi / 180.0);
     const auto tangent_gather = [&](const Circle2& c) {
       s.circle_members_.clear();
       for (const int p : s.pool_) {
@@ -314,13 +309,13 @@ bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece,
         const double dx = q.x - c.centre.x, dy = q.y - c.centre.y;
         const double r = norm(dx, dy);
         if (std::abs(r - c.radius) > tolerance(q) || r <= 0.0 || !has_direction(p)) continue;
-        if (along_paint(Line2{q, -dy / r, dx / r}, p, max_tan)) s.circle_members_.push_back(p);
+        if (along_paint(Line2{q, -dy / r, dx / r}, p, max_direction_tan_)) s.circle_members_.push_back(p);
       }
     };
     for (const double side : {1.0, -1.0}) {
       const Circle2 touching{{middle.x - line.dy * side * r0, middle.y + line.dx * side * r0}, r0};
       const CentreCircle judged = refine_and_judge(touching, tangent_gather, true);
-      if (judged.seen && tangent_rms(judged, s.circle_members_) <= max_rms_tan) {
+      if (judged.seen && tangent_rms(judged, s.circle_members_) <= max_tangent_rms_tan_) {
         accept(judged);
         return true;
       }

@@ -125,7 +125,11 @@ class RansacScratch {
 
 class RansacLineFinder {
  public:
-  RansacLineFinder(const RansacParams& params, std::size_t capacity) : params_(params), scratch_(capacity) {}
+  RansacLineFinder(const RansacParams& params, std::size_t capacity)
+      : params_(params),
+        scratch_(capacity),
+        max_direction_tan_(direction_tan(params.max_direction_deg)),
+        max_tangent_rms_tan_(tan_deg(params.tangent_max_rms_deg)) {}
 
   /// Fits lines to `candidates` for frame `frame` (the PRNG stream). `max_trials`, `max_lines`
   /// and `skip` override the params when ≥ 0 (resp. ≥ 1 for skip) (degrade levels). Image endpoints come from projecting the ground
@@ -146,6 +150,7 @@ class RansacLineFinder {
     return params_.inlier_per_m == 0.0 ? params_.inlier_base_m
                                        : params_.inlier_base_m + params_.inlier_per_m * std::sqrt(p.x * p.x + p.y * p.y);
   }
+  [[nodiscard]] static double tan_deg(double deg) noexcept;
   [[nodiscard]] static double direction_tan(double max_deg) noexcept;  // < 0: no gate
   [[nodiscard]] bool in_band(const Line2& l, int p) const noexcept {
     const hal::RobotPoint& q = scratch_.points_[static_cast<std::size_t>(p)];
@@ -158,14 +163,21 @@ class RansacLineFinder {
   /// RMS over `members` of the tangent of the angle, in the picture, between their paint and
   /// the circle's tangent.
   [[nodiscard]] double tangent_rms(const CentreCircle& c, std::span<const int> members) const noexcept;
-  /// Point p's paint runs within atan(max_tan) of l in the picture (or its direction is unknown).
-  [[nodiscard]] bool along_paint(const Line2& l, int p, double max_tan) const noexcept {
-    // The line's direction h = α·along + β·across; in the picture it runs at atan|β/α| =
-    // atan(|along × h| / |h × across|) to the paint.
-    if (max_tan < 0.0 || !has_direction(p)) return true;
+  /// A ground direction h = α·along + β·across runs at atan|β/α| = atan(off / on) to point p's
+  /// paint in the picture: off = |along × h|, on = |h × across|.
+  struct PaintOffset {
+    double off = 0.0, on = 0.0;
+  };
+  [[nodiscard]] PaintOffset paint_offset(double hx, double hy, int p) const noexcept {
     const hal::RobotPoint& u = scratch_.along_[static_cast<std::size_t>(p)];
     const hal::RobotPoint& v = scratch_.across_[static_cast<std::size_t>(p)];
-    return std::abs(u.x * l.dy - u.y * l.dx) <= max_tan * std::abs(l.dx * v.y - l.dy * v.x);
+    return {std::abs(u.x * hy - u.y * hx), std::abs(hx * v.y - hy * v.x)};
+  }
+  /// Point p's paint runs within atan(max_tan) of l in the picture (or its direction is unknown).
+  [[nodiscard]] bool along_paint(const Line2& l, int p, double max_tan) const noexcept {
+    if (max_tan < 0.0 || !has_direction(p)) return true;
+    const PaintOffset o = paint_offset(l.dx, l.dy, p);
+    return o.off <= max_tan * o.on;
   }
   /// The arc test of one piece; true (and the circle updated) when it is part of the circle.
   bool try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept;
@@ -180,6 +192,8 @@ class RansacLineFinder {
 
   RansacParams params_;
   RansacScratch scratch_;
+  double max_direction_tan_;    // tan(max_direction_deg), < 0: no gate
+  double max_tangent_rms_tan_;  // tan(tangent_max_rms_deg)
 };
 
 }  // namespace ringlet::vision
