@@ -155,6 +155,27 @@ void BM_Ransac(benchmark::State& state) {
 }
 BENCHMARK(BM_Ransac)->Unit(benchmark::kMicrosecond);
 
+// The centre circle's stage alone on the fixture's candidates: its two-point trials and the
+// judgement of the best hypotheses. The cost model's per_circle_test_ns is this time over the
+// tests counter (each trial walks the sample three times: the second point's candidates, then one
+// walk per centre).
+void BM_CentreCircle(benchmark::State& state) {
+  const Fixture& f = fixture();
+  ClassImage classes(640, 480);
+  classes.classify(f.yuyv.view, f.table, f.first, 1);
+  CandidateBuffer cands(4096);
+  LineScanner scanner(640);
+  scanner.scan(classes, f.yuyv.view, f.cam.k, f.pose, f.rows, {}, cands);
+  CentreCircleFinder finder({}, 4096);
+  CircleStats stats;
+  std::uint64_t frame = 0;
+  const int trials = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(finder.find(cands.points(), ++frame, 1, {}, stats, trials).seen);
+  state.counters["tests"] = 3.0 * stats.trials_run * stats.points_used;
+  state.counters["seen"] = finder.find(cands.points(), frame, 1, {}, stats).seen ? 1.0 : 0.0;
+}
+BENCHMARK(BM_CentreCircle)->Arg(40)->Arg(80)->Arg(1)->Unit(benchmark::kMicrosecond);
+
 void BM_Ball(benchmark::State& state) {
   const Fixture& f = fixture();
   ClassImage classes(640, 480);

@@ -26,6 +26,32 @@ struct Scored {
 
 double distance(const hal::RobotPoint& a, const hal::RobotPoint& b) noexcept { return hal::portable_hypot(b.x - a.x, b.y - a.y); }
 
+double squared_distance(const hal::RobotPoint& a, const hal::RobotPoint& b) noexcept {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return dx * dx + dy * dy;
+}
+
+/// Decides whether a distance lies in [lo, hi] from its square where that is clear, so that most
+/// points need no square root (the trials' and the gathers' cost); within a hair of either bound
+/// the caller measures the distance itself, so every answer is the one the distance gives.
+class DistanceRange {
+ public:
+  enum class Verdict : std::uint8_t { kOut, kIn, kMeasure };
+  DistanceRange(double lo, double hi) noexcept
+      : out_below_(lo > 0.0 ? lo * lo * (1.0 - kGuard) : -1.0),
+        in_above_(lo > 0.0 ? lo * lo * (1.0 + kGuard) : -1.0),
+        in_below_(hi * hi * (1.0 - kGuard)),
+        out_above_(hi * hi * (1.0 + kGuard)) {}
+  [[nodiscard]] Verdict of(double squared) const noexcept {
+    if (squared < out_below_ || squared > out_above_) return Verdict::kOut;
+    return squared > in_above_ && squared < in_below_ ? Verdict::kIn : Verdict::kMeasure;
+  }
+
+ private:
+  static constexpr double kGuard = 1e-9;  // far above the rounding of a square, far below any tolerance
+  double out_below_, in_above_, in_below_, out_above_;
+};
+
 int bin_of(const Circle2& c, const hal::RobotPoint& p) noexcept {
   const double a = std::atan2(p.y - c.centre.y, p.x - c.centre.x);  // [−π, π]
   const int b = static_cast<int>(std::floor((a + std::numbers::pi) / (2.0 * std::numbers::pi) * kBins));
@@ -41,8 +67,16 @@ double rms_of(const Circle2& c, std::span<const hal::RobotPoint> points, std::sp
 ArcCoverage arc_coverage(const Circle2& c, std::span<const hal::RobotPoint> points, std::span<const int> members,
                          const CircleParams& params, ArcScratch& scratch) noexcept {
   ArcCoverage out;
+  // Each member's bin once (atan2 is most of this stage's cost), then a counting sort by bin:
+  // members in angle order, so that a chunk of bins is a contiguous range of indices. Within a
+  // bin they keep the order they came in (ascending, as every caller collects them).
+  scratch.bin.clear();
   std::array<int, kBins> count{};
-  for (const int m : members) ++count[static_cast<std::size_t>(bin_of(c, points[static_cast<std::size_t>(m)]))];
+  for (const int m : members) {
+    const int b = bin_of(c, points[static_cast<std::size_t>(m)]);
+    scratch.bin.push_back(b);
+    ++count[static_cast<std::size_t>(b)];
+  }
   std::array<bool, kBins> occupied{};
   for (int b = 0; b < kBins; ++b) {
     occupied[static_cast<std::size_t>(b)] = count[static_cast<std::size_t>(b)] >= 2;
@@ -54,13 +88,7 @@ ArcCoverage arc_coverage(const Circle2& c, std::span<const hal::RobotPoint> poin
     run = count[static_cast<std::size_t>(b % kBins)] > 0 ? run + 1 : 0;
     out.longest_run = std::max(out.longest_run, std::min(run, kBins));
   }
-  // Members in angle order, so that a chunk of bins is a contiguous range of indices.
-  scratch.order.clear();
-  for (const int m : members) scratch.order.emplace_back(bin_of(c, points[static_cast<std::size_t>(m)]), m);
-  std::sort(scratch.order.begin(), scratch.order.end());
-  scratch.index.clear();
-  for (const auto& [bin, m] : scratch.order) scratch.index.push_back(m);
-  // The first index of each bin in that order.
+  // The first index of each bin in angle order.
   std::array<std::size_t, kBins + 1> first{};
   {
     std::size_t at = 0;
@@ -69,6 +97,14 @@ ArcCoverage arc_coverage(const Circle2& c, std::span<const hal::RobotPoint> poin
       at += static_cast<std::size_t>(count[static_cast<std::size_t>(b)]);
     }
     first[kBins] = at;
+  }
+  scratch.index.resize(members.size());
+  {
+    std::array<std::size_t, kBins> next{};
+    std::copy(first.begin(), first.begin() + kBins, next.begin());
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      scratch.index[next[static_cast<std::size_t>(scratch.bin[i])]++] = members[i];
+    }
   }
   const double c0 = 1.0 / (2.0 * params.radius_m);
   const auto judge_chunk = [&](int from, int len) {  // bins from .. from + len − 1 (no wrap)
@@ -128,13 +164,14 @@ std::optional<Circle2> refine_centre_circle(const Circle2& start, std::span<cons
 
 CentreCircle CentreCircleFinder::judge(const Circle2& circle, std::span<const hal::RobotPoint> points,
                                        std::span<const int> members, const CircleParams& params,
-                                       ArcScratch& scratch, bool tangent_members) noexcept {
+                                       ArcScratch& scratch, bool tangent_members, ArcCoverage* coverage_out) noexcept {
   CentreCircle out;
   out.centre = circle.centre;
   out.radius_m = circle.radius;
   out.inliers = static_cast<int>(members.size());
   out.rms_m = rms_of(circle, points, members);
   const ArcCoverage cov = arc_coverage(circle, points, members, params, scratch);
+  if (coverage_out != nullptr) *coverage_out = cov;
   out.coverage_deg = cov.bins * 10.0;
   const bool radius_ok = std::abs(circle.radius - params.radius_m) <= params.radius_tolerance * params.radius_m;
   const int curved_bins = tangent_members ? cov.bins : cov.curved_bins;
@@ -163,13 +200,19 @@ CentreCircleFinder::CentreCircleFinder(const CircleParams& params, std::size_t c
     : params_(params), arc_(capacity) {
   points_.reserve(capacity);
   sample_.reserve(capacity);
+  eligible_.reserve(capacity);
   members_.reserve(capacity);
 }
 
 std::size_t CentreCircleFinder::gather(const Circle2& c, double band) noexcept {
   members_.clear();
+  const DistanceRange ring(c.radius - band, c.radius + band);
   for (std::size_t i = 0; i < points_.size(); ++i) {
-    if (std::abs(distance(points_[i], c.centre) - c.radius) <= band) members_.push_back(static_cast<int>(i));
+    const DistanceRange::Verdict v = ring.of(squared_distance(points_[i], c.centre));
+    if (v == DistanceRange::Verdict::kOut) continue;
+    if (v == DistanceRange::Verdict::kIn || std::abs(distance(points_[i], c.centre) - c.radius) <= band) {
+      members_.push_back(static_cast<int>(i));
+    }
   }
   return members_.size();
 }
@@ -223,29 +266,26 @@ CentreCircle CentreCircleFinder::find(std::span<const CandidatePoint> candidates
   };
   int t = 0;
   const double band = params_.hypothesis_band_m;
+  const DistanceRange pair_range(params_.min_pair_distance_m, max_pair);
+  const DistanceRange band_range(r0 - band, r0 + band);
   for (; t < trials; ++t) {
     if (deadline.expired()) break;
     ++stats.trials_run;
     const hal::RobotPoint& a = points_[static_cast<std::size_t>(sample_[rng.below(sample_.size())])];
     // The second point: uniform among the sample points at a usable distance from the first.
-    std::size_t eligible = 0;
+    eligible_.clear();
     for (const int j : sample_) {
-      const double d = distance(a, points_[static_cast<std::size_t>(j)]);
-      eligible += (d >= params_.min_pair_distance_m && d < max_pair) ? 1U : 0U;
-    }
-    if (eligible == 0) continue;
-    std::size_t pick = rng.below(eligible);
-    hal::RobotPoint b{};
-    for (const int j : sample_) {
-      const double d = distance(a, points_[static_cast<std::size_t>(j)]);
-      if (d >= params_.min_pair_distance_m && d < max_pair) {
-        if (pick == 0) {
-          b = points_[static_cast<std::size_t>(j)];
-          break;
-        }
-        --pick;
+      const hal::RobotPoint& q = points_[static_cast<std::size_t>(j)];
+      const DistanceRange::Verdict v = pair_range.of(squared_distance(a, q));
+      if (v == DistanceRange::Verdict::kOut) continue;
+      if (v == DistanceRange::Verdict::kMeasure) {
+        const double d = distance(a, q);
+        if (d < params_.min_pair_distance_m || d >= max_pair) continue;
       }
+      eligible_.push_back(j);
     }
+    if (eligible_.empty()) continue;
+    const hal::RobotPoint b = points_[static_cast<std::size_t>(eligible_[rng.below(eligible_.size())])];
     // The two circles of radius r0 through a and b: centres on the perpendicular bisector.
     const double d = distance(a, b);
     const double h = std::sqrt(std::max(0.0, r0 * r0 - d * d / 4.0));
@@ -257,7 +297,9 @@ CentreCircle CentreCircleFinder::find(std::span<const CandidatePoint> candidates
       // so points hugging a circle outscore lines that merely cross its band.
       double score = 0.0;
       for (const int j : sample_) {
-        const double e = (distance(points_[static_cast<std::size_t>(j)], c.centre) - r0) / band;
+        const hal::RobotPoint& q = points_[static_cast<std::size_t>(j)];
+        if (band_range.of(squared_distance(q, c.centre)) == DistanceRange::Verdict::kOut) continue;
+        const double e = (distance(q, c.centre) - r0) / band;
         if (std::abs(e) < 1.0) score += 1.0 - e * e;
       }
       keep(c, score);
@@ -281,8 +323,8 @@ CentreCircle CentreCircleFinder::find(std::span<const CandidatePoint> candidates
       if (gather(circle, params_.band_m) < min_inliers || !moved) break;
     }
     gather(circle, params_.band_m);
-    const CentreCircle judged = judge(circle, points_, members_, params_, arc_);
-    const ArcCoverage cov = arc_coverage(circle, points_, members_, params_, arc_);
+    ArcCoverage cov;
+    const CentreCircle judged = judge(circle, points_, members_, params_, arc_, false, &cov);
     if (judged.seen || h == 0) {  // the stats describe the accepted circle, or the best refused one
       stats.curved_bins = cov.curved_bins;
       stats.straight_bins = cov.straight_bins;

@@ -98,11 +98,11 @@ struct ArcCoverage {
 /// Storage arc_coverage() sorts members in, reserved once for a capacity.
 struct ArcScratch {
   explicit ArcScratch(std::size_t capacity) {
-    order.reserve(capacity);
+    bin.reserve(capacity);
     index.reserve(capacity);
   }
-  std::vector<std::pair<double, int>> order;  // (angle around the centre, point index)
-  std::vector<int> index;                     // the same indices in angle order
+  std::vector<int> bin;    // each member's 10° bin around the centre
+  std::vector<int> index;  // the members in bin order
 };
 
 class CentreCircleFinder {
@@ -119,10 +119,11 @@ class CentreCircleFinder {
   /// fills confidence (0 when refused). Used for the circle the line rounds find too.
   /// `tangent_members`: every member's paint was seen to run along the circle's tangent, which
   /// shows the curve where the positions are too noisy to (a far circle): the arc's coverage
-  /// then stands for its curvature.
+  /// then stands for its curvature. `coverage_out`, if given, receives the arc_coverage() judged.
   [[nodiscard]] static CentreCircle judge(const Circle2& circle, std::span<const hal::RobotPoint> points,
                                           std::span<const int> members, const CircleParams& params,
-                                          ArcScratch& scratch, bool tangent_members = false) noexcept;
+                                          ArcScratch& scratch, bool tangent_members = false,
+                                          ArcCoverage* coverage_out = nullptr) noexcept;
 
   [[nodiscard]] const CircleParams& params() const noexcept { return params_; }
 
@@ -132,6 +133,7 @@ class CentreCircleFinder {
   CircleParams params_;
   std::vector<hal::RobotPoint> points_;
   std::vector<int> sample_;
+  std::vector<int> eligible_;  // one trial's candidates for its second point
   std::vector<int> members_;
   ArcScratch arc_;
 };
