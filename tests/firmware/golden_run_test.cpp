@@ -107,8 +107,10 @@ constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0x2b3a1ae0c646d27a
 // degrade policy acts differently and the policies run's hashes changed (kSplField did not).
 // Then each line candidate carries its paint's direction and RANSAC keeps points whose paint runs
 // across a line out of it (issue 10): other lines reach the filter, and both SPL hashes changed.
-constexpr Golden kSplField{"spl_field.toml (4 s)", 0x25679dddeaf8f50aULL, 0x81dc085edeb4925dULL};
-constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x5f456deed60051c2ULL, 0x1add8b9eb0e09857ULL};
+// Then colour cells with 3 field samples (was 8) have their own carpet luminance and lines, and
+// the centre circle's work has its own cost row (a faster stage): both SPL hashes changed.
+constexpr Golden kSplField{"spl_field.toml (4 s)", 0xe72220c060e76403ULL, 0x001ea6baab98d3e7ULL};
+constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0xa29917dd87233a18ULL, 0x86e4af0d3a7987b2ULL};
 
 // The hybrid controller (planner + arbiter under Navigate): the courtyard's whole mission, and the
 // first 30 s of P&B's test world (the dead end found and planned around) and of the woods.

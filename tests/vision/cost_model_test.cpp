@@ -40,8 +40,10 @@ TEST(VisionCost, TheWorkCountDependsOnTheFrameNotOnTheClock) {
   EXPECT_EQ(plain.colour_samples, timed.colour_samples);
   EXPECT_EQ(plain.colour_rebuilds, timed.colour_rebuilds);
   EXPECT_EQ(plain.robot_samples, timed.robot_samples);
+  EXPECT_EQ(plain.circle_tests, timed.circle_tests);
   EXPECT_GT(plain.classified_pixels, 100'000);
   EXPECT_GT(plain.point_tests, 0);
+  EXPECT_GT(plain.circle_tests, 0);
   EXPECT_EQ(modelled_cost(plain), modelled_cost(timed));
 }
 
@@ -149,9 +151,10 @@ TEST(VisionCost, TheModelIsAWeightedSumTimesTheBoardFactor) {
   m.per_robot_sample_ns = 8.0;
   m.per_ball_window_ns = 9.0;
   m.per_robot_window_ns = 10.0;
-  const WorkCount w{10, 20, 30, 40, 50, 60, 1, 80, 90, 100};
+  m.per_circle_test_ns = 11.0;
+  const WorkCount w{10, 20, 30, 40, 50, 60, 1, 80, 90, 100, 110};
   EXPECT_EQ(modelled_cost(w, m),
-            hal::Nanos{2 * (100 + 10 + 40 + 90 + 160 + 250 + 360 + 7 + 640 + 810 + 1000)});
+            hal::Nanos{2 * (100 + 10 + 40 + 90 + 160 + 250 + 360 + 7 + 640 + 810 + 1000 + 1210)});
   EXPECT_EQ(modelled_cost(WorkCount{}, m), hal::Nanos{200});
 }
 

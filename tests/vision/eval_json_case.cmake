@@ -1,5 +1,5 @@
 # ringlet-vision-eval's JSON: both detectors, each with precision, recall and F1 in [0, 1], a
-# positive median time, a count of arc pieces taken for lines and recall by the paint's width; the centre circle's and the marks' scores. Run as: cmake -DJSON=<file> -P eval_json_case.cmake
+# positive median time, a count of arc pieces taken for lines and recall by the paint's width; the centre circle's and the marks' scores; the cost model beside the measured stage times. Run as: cmake -DJSON=<file> -P eval_json_case.cmake
 file(READ ${JSON} text)
 foreach(d ringlet hough)
   foreach(m precision recall f1)
@@ -125,3 +125,24 @@ string(JSON mode GET "${text}" ball_mode)
 if(NOT mode STREQUAL "bw")
   message(FATAL_ERROR "ball mode ${mode}, expected the default bw")
 endif()
+# The cost model beside the clock: a positive modelled time per frame, a positive measured /
+# modelled ratio, and every stage with both medians (the classification and the scan always run).
+string(JSON modelled GET "${text}" cost_model modelled_host_median_ms)
+string(JSON ratio GET "${text}" cost_model measured_over_modelled median)
+if(NOT modelled GREATER 0 OR NOT ratio GREATER 0)
+  message(FATAL_ERROR "cost model: modelled ${modelled} ms per frame, measured / modelled ${ratio}")
+endif()
+foreach(stage horizon classify ball scan ransac circle robots)
+  string(JSON m GET "${text}" cost_model stages ${stage} measured_median_ms)
+  string(JSON c GET "${text}" cost_model stages ${stage} modelled_median_ms)
+  if(m LESS 0 OR c LESS 0)
+    message(FATAL_ERROR "cost model stage ${stage}: measured ${m} ms, modelled ${c} ms")
+  endif()
+endforeach()
+foreach(stage classify scan)
+  string(JSON m GET "${text}" cost_model stages ${stage} measured_median_ms)
+  string(JSON c GET "${text}" cost_model stages ${stage} modelled_median_ms)
+  if(NOT m GREATER 0 OR NOT c GREATER 0)
+    message(FATAL_ERROR "cost model stage ${stage}: measured ${m} ms, modelled ${c} ms, expected both > 0")
+  endif()
+endforeach()

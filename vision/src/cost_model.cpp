@@ -22,7 +22,12 @@ CostModel default_cost_model() noexcept {
   // Sobels across its run's edges, one back-projection; scan_points.cpp) added 8 us for the 779
   // candidates (BM_ScanPoints/2/1 354 -> 362 us, idle host, median of 3): 10 ns more per
   // candidate. RANSAC's direction gate did not cost more (BM_Ransac 106 -> 103 us: its per-point
-  // tests are inlined now).
+  // tests are inlined now). The centre circle has its own row since its stage became twice as fast
+  // (its trials' distances from their squares, its bins counted once; BM_CentreCircle 210 -> 111
+  // us): before, a circle trial counted 4 walks of its sample at the point test's 10 ns, which
+  // modelled the stage below its measured time (139 us against 185 us on the ball's footing), and
+  // that relation is kept, scaled by the stage's measured speed-up (against BM_Ball in the same
+  // run: 3.58 -> 1.9-2.1 times its time, ×0.56): 4 × 10 ns × 0.56 over the 3 walks it makes now.
   CostModel m;
   m.fixed_ns = 10'000.0;
   m.per_classified_pixel_ns = 0.63;
@@ -35,23 +40,33 @@ CostModel default_cost_model() noexcept {
   m.per_robot_sample_ns = 1.3;
   m.per_ball_window_ns = 25'000.0;
   m.per_robot_window_ns = 67'000.0;
+  m.per_circle_test_ns = 7.5;
   return m;
 }
 
+HostCost host_cost(const WorkCount& work, const CostModel& model) noexcept {
+  const auto ns = [](double per_unit, std::int64_t units) { return per_unit * static_cast<double>(units); };
+  HostCost c;
+  c.fixed = model.fixed_ns;
+  c.classified_pixels = ns(model.per_classified_pixel_ns, work.classified_pixels);
+  c.ball_samples = ns(model.per_ball_sample_ns, work.ball_samples);
+  c.scanned_pixels = ns(model.per_scanned_pixel_ns, work.scanned_pixels);
+  c.candidates = ns(model.per_candidate_ns, work.candidates);
+  c.point_tests = ns(model.per_point_test_ns, work.point_tests);
+  c.colour_samples = ns(model.per_colour_sample_ns, work.colour_samples);
+  c.colour_rebuilds = ns(model.per_colour_rebuild_ns, work.colour_rebuilds);
+  c.robot_samples = ns(model.per_robot_sample_ns, work.robot_samples);
+  c.ball_windows = ns(model.per_ball_window_ns, work.ball_windows);
+  c.robot_windows = ns(model.per_robot_window_ns, work.robot_windows);
+  c.circle_tests = ns(model.per_circle_test_ns, work.circle_tests);
+  return c;
+}
+
 hal::Nanos modelled_cost(const WorkCount& work, const CostModel& model) noexcept {
-  // Integer work times double coefficients: the same IEEE operations in the same order on every
-  // target (the build has -ffp-contract=off), so the same frame gets the same cost everywhere.
-  const double host_ns = model.fixed_ns + model.per_classified_pixel_ns * static_cast<double>(work.classified_pixels) +
-                         model.per_ball_sample_ns * static_cast<double>(work.ball_samples) +
-                         model.per_scanned_pixel_ns * static_cast<double>(work.scanned_pixels) +
-                         model.per_candidate_ns * static_cast<double>(work.candidates) +
-                         model.per_point_test_ns * static_cast<double>(work.point_tests) +
-                         model.per_colour_sample_ns * static_cast<double>(work.colour_samples) +
-                         model.per_colour_rebuild_ns * static_cast<double>(work.colour_rebuilds) +
-                         model.per_robot_sample_ns * static_cast<double>(work.robot_samples) +
-                         model.per_ball_window_ns * static_cast<double>(work.ball_windows) +
-                         model.per_robot_window_ns * static_cast<double>(work.robot_windows);
-  return hal::Nanos{static_cast<std::int64_t>(std::llround(host_ns * model.board_slowdown))};
+  // Integer work times double coefficients, summed in one fixed order (HostCost::total): the same
+  // IEEE operations on every target (the build has -ffp-contract=off), so the same frame gets the
+  // same cost everywhere.
+  return hal::Nanos{static_cast<std::int64_t>(std::llround(host_cost(work, model).total() * model.board_slowdown))};
 }
 
 }  // namespace ringlet::vision

@@ -203,8 +203,8 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
   if (scanned && may_run(Stage::kCircle)) {
     r.circle = circle_.find(candidates_.points(), frame.sequence, config_.ransac.seed, deadline, r.circle_stats,
                             level.circle_trials);
-    // Each trial walks its sample four times (two to pick the second point, one per centre).
-    r.work.point_tests += 4 * static_cast<std::int64_t>(r.circle_stats.trials_run) * r.circle_stats.points_used;
+    // Each trial walks its sample three times (one to pick the second point, one per centre).
+    r.work.circle_tests = 3 * static_cast<std::int64_t>(r.circle_stats.trials_run) * r.circle_stats.points_used;
     if (r.circle_stats.trials_skipped > 0) r.cut.deadline_hit = true;
     lap(Stage::kCircle);
   }

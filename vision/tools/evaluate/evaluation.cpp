@@ -12,6 +12,8 @@
 #include "dataset_frame.hpp"
 #include "frame_identity.hpp"
 #include "ringlet/hal/yuv.hpp"
+#include "ringlet/hal/monotonic_clock.hpp"
+#include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/horizon.hpp"
 #include "vision_io.hpp"
 
@@ -39,6 +41,14 @@ double DetectorReport::p99_ms() const { return percentile(time_ms, 99.0); }
 double DetectorReport::mean_ms() const {
   if (time_ms.empty()) return 0.0;
   return std::accumulate(time_ms.begin(), time_ms.end(), 0.0) / static_cast<double>(time_ms.size());
+}
+
+double EvalReport::measured_over_modelled(double p) const {
+  std::vector<double> ratio;
+  for (std::size_t i = 0; i < model_host_ms.size() && i < ringlet.time_ms.size(); ++i) {
+    if (model_host_ms[i] > 0.0) ratio.push_back(ringlet.time_ms[i] / model_host_ms[i]);
+  }
+  return percentile(ratio, p);
 }
 
 double EvalReport::speed_ratio() const {
@@ -100,6 +110,25 @@ struct HoughRun {
   std::vector<Segment2> segments;
   double ms = 0.0;
 };
+
+/// The frame's modelled host time, whole and by stage, beside the stages' measured times.
+void record_model(const VisionResult& result, EvalReport& report) {
+  const CostModel model = default_cost_model();
+  report.model_host_ms.push_back(static_cast<double>(modelled_cost(result.work, model).count()) / model.board_slowdown / 1e6);
+  const HostCost c = host_cost(result.work, model);
+  std::array<double, kStageCount> modelled_ns{};
+  modelled_ns[static_cast<std::size_t>(Stage::kHorizon)] = c.fixed;
+  modelled_ns[static_cast<std::size_t>(Stage::kClassify)] = c.colour_samples + c.colour_rebuilds + c.classified_pixels;
+  modelled_ns[static_cast<std::size_t>(Stage::kBall)] = c.ball_samples + c.ball_windows;
+  modelled_ns[static_cast<std::size_t>(Stage::kRobots)] = c.robot_samples + c.robot_windows;
+  modelled_ns[static_cast<std::size_t>(Stage::kScan)] = c.scanned_pixels + c.candidates;
+  modelled_ns[static_cast<std::size_t>(Stage::kCircle)] = c.circle_tests;
+  modelled_ns[static_cast<std::size_t>(Stage::kRansac)] = c.point_tests;  // the lines' and the marks'
+  for (std::size_t s = 0; s < kStageCount; ++s) {
+    report.stage_times[s].measured_ms.push_back(hal::to_seconds(result.stage_time[s]) * 1e3);
+    report.stage_times[s].modelled_ms.push_back(modelled_ns[s] / 1e6);
+  }
+}
 
 HoughRun run_hough(const LoadedFrame& f, const HoughParams& p, int margin_px) {
   // Timed from the horizon on, as the pipeline's time includes its own horizon computation.
@@ -217,6 +246,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
   tuning.clear();
 
   std::unique_ptr<VisionPipeline> pipeline;
+  const hal::ThreadStopwatch stopwatch;
   std::vector<Segment2> segments;
   for (std::size_t i = 0; i < test.size(); ++i) {
     const LoadedFrame f = load_frame(test[i]);
@@ -233,9 +263,12 @@ EvalReport run_evaluation(const EvalOptions& o) {
     }
     const hal::FrameView view = yuyv_view(f);
     pipeline->forget_history();  // the test frames are unrelated pictures, not a video
+    // A deadline that never comes, on the real clock: it only makes the pipeline time its stages.
+    const Deadline laps{&stopwatch, hal::Nanos::max(), false};
     const auto start = Clock::now();
-    const VisionResult& result = pipeline->process(view, f.meta.head);
+    const VisionResult& result = pipeline->process(view, f.meta.head, laps);
     report.ringlet.time_ms.push_back(elapsed_ms(start));
+    record_model(result, report);
     if (result.status != VisionStatus::kOk) throw tools::ToolError(test[i].string() + ": the pipeline refused the frame");
     segments.clear();
     for (std::size_t l = 0; l < result.line_count; ++l) {

@@ -10,6 +10,7 @@
 // tuning set and every `disjoint_from` set (e.g. the frames Ringlet's own parameters were chosen
 // on) are checked against the test set (frame_identity.hpp: same seed and index, or identical
 // pixels); any shared frame is a ToolError, so a report can only come from unseen frames.
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -110,8 +111,20 @@ struct EvalReport {
   std::vector<RobotMatchInFrame> robot_matches;  // every matched expected robot: where the errors come from
   BallMatchParams ball_match{};
   RobotMatchParams robot_match{};
+  /// Per test frame, Ringlet's time as the cost model has it on this host (modelled_cost of the
+  /// frame's work over the board factor), beside ringlet.time_ms: how far the model is off.
+  std::vector<double> model_host_ms;
+  /// Per stage (pipeline Stage) and test frame: the time the stage took (wall, on the stage laps)
+  /// and the model's rows for it (horizon: the per-frame row; classify: the colour estimate, the
+  /// table rebuild and the classified pixels; scan: its pixels and candidates; ...).
+  struct StageTimes {
+    std::vector<double> measured_ms, modelled_ms;
+  };
+  std::array<StageTimes, kStageCount> stage_times{};
   /// Hough's median time / Ringlet's: > 1 means Ringlet is faster.
   [[nodiscard]] double speed_ratio() const;
+  /// Percentile p of measured / modelled time over the test frames (0 without frames).
+  [[nodiscard]] double measured_over_modelled(double p) const;
 };
 
 /// Runs the whole comparison. ToolError on bad input (folder, frame records, images, LUT, too few

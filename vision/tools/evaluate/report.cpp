@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "vision_io.hpp"
+
 namespace ringlet::vision::evaluate {
 
 namespace {
@@ -187,6 +189,16 @@ void print_report(const EvalReport& r, std::ostream& os) {
   row("  frames with any", std::to_string(r.ringlet.frames_with_arc_false_positives()),
       std::to_string(r.baseline.frames_with_arc_false_positives()));
   os << "speed ratio (Hough median / Ringlet median): " << fmt("%.2f", r.speed_ratio()) << "x\n";
+  os << "cost model on this host (modelled_cost / board factor): median " << fmt("%.3f", percentile(r.model_host_ms, 50.0))
+     << " ms; measured / modelled per frame: median " << fmt("%.2f", r.measured_over_modelled(50.0)) << ", p90 "
+     << fmt("%.2f", r.measured_over_modelled(90.0)) << "\n";
+  os << "  by stage, median measured / modelled ms:";
+  for (std::size_t s = 0; s < kStageCount; ++s) {
+    const auto& t = r.stage_times[s];
+    os << " " << tools::stage_name(s) << " " << fmt("%.3f", percentile(t.measured_ms, 50.0)) << "/"
+       << fmt("%.3f", percentile(t.modelled_ms, 50.0));
+  }
+  os << "\n";
   const CircleCounts& c = r.circle;
   os << "\ncentre circle (Ringlet): a match is a centre within " << r.circle_match.max_centre_error_m
      << " m and a radius within " << r.circle_match.max_radius_error_m << " m of the truth; expected when >= "
@@ -208,6 +220,17 @@ void print_report(const EvalReport& r, std::ostream& os) {
 
 namespace {
 // The centre circle's and the marks' common figures (both CircleCounts).
+/// Per stage: the medians of its measured time and of the model's rows for it.
+nlohmann::json stage_json(const EvalReport& r) {
+  nlohmann::json out = nlohmann::json::object();
+  for (std::size_t s = 0; s < kStageCount; ++s) {
+    const auto& t = r.stage_times[s];
+    out[tools::stage_name(s)] = {{"measured_median_ms", percentile(t.measured_ms, 50.0)},
+                                 {"modelled_median_ms", percentile(t.modelled_ms, 50.0)}};
+  }
+  return out;
+}
+
 nlohmann::json landmark_json(const CircleCounts& c) {
   return {{"precision", c.precision()},          {"recall", c.recall()},
           {"f1", c.f1()},                        {"detections_scored", c.detections},
@@ -250,6 +273,11 @@ nlohmann::json report_json(const EvalReport& r) {
           {"hough_tuning", tuning},
           {"detectors", {{"ringlet", detector_json(r.ringlet)}, {"hough", detector_json(r.baseline)}}},
           {"speed_ratio", r.speed_ratio()},
+          {"cost_model", {{"modelled_host_median_ms", percentile(r.model_host_ms, 50.0)},
+                          {"measured_over_modelled", {{"median", r.measured_over_modelled(50.0)},
+                                                      {"p90", r.measured_over_modelled(90.0)},
+                                                      {"max", r.measured_over_modelled(100.0)}}},
+                          {"stages", stage_json(r)}}},
           {"object_frames", r.object_frames},
           {"ball_mode", r.ball_mode},
           {"ball_model", r.ball_model},
