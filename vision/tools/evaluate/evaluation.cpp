@@ -11,8 +11,8 @@
 
 #include "dataset_frame.hpp"
 #include "frame_identity.hpp"
-#include "ringlet/hal/yuv.hpp"
 #include "ringlet/hal/monotonic_clock.hpp"
+#include "ringlet/hal/yuv.hpp"
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/horizon.hpp"
 #include "vision_io.hpp"
@@ -113,9 +113,8 @@ struct HoughRun {
 
 /// The frame's modelled host time, whole and by stage, beside the stages' measured times.
 void record_model(const VisionResult& result, EvalReport& report) {
-  const CostModel model = default_cost_model();
-  report.model_host_ms.push_back(static_cast<double>(modelled_cost(result.work, model).count()) / model.board_slowdown / 1e6);
-  const HostCost c = host_cost(result.work, model);
+  const HostCost c = host_cost(result.work);
+  report.model_host_ms.push_back(c.total() / 1e6);
   std::array<double, kStageCount> modelled_ns{};
   modelled_ns[static_cast<std::size_t>(Stage::kHorizon)] = c.fixed;
   modelled_ns[static_cast<std::size_t>(Stage::kClassify)] = c.colour_samples + c.colour_rebuilds + c.classified_pixels;

@@ -111,8 +111,9 @@ struct EvalReport {
   std::vector<RobotMatchInFrame> robot_matches;  // every matched expected robot: where the errors come from
   BallMatchParams ball_match{};
   RobotMatchParams robot_match{};
-  /// Per test frame, Ringlet's time as the cost model has it on this host (modelled_cost of the
-  /// frame's work over the board factor), beside ringlet.time_ms: how far the model is off.
+  /// Per test frame, Ringlet's time as the cost model has it on this host (host_cost of the
+  /// frame's work: modelled_cost before the board factor), beside ringlet.time_ms: how far the
+  /// model is off.
   std::vector<double> model_host_ms;
   /// Per stage (pipeline Stage) and test frame: the time the stage took (wall, on the stage laps)
   /// and the model's rows for it (horizon: the per-frame row; classify: the colour estimate, the

@@ -219,7 +219,6 @@ void print_report(const EvalReport& r, std::ostream& os) {
 }
 
 namespace {
-// The centre circle's and the marks' common figures (both CircleCounts).
 /// Per stage: the medians of its measured time and of the model's rows for it.
 nlohmann::json stage_json(const EvalReport& r) {
   nlohmann::json out = nlohmann::json::object();
@@ -231,6 +230,7 @@ nlohmann::json stage_json(const EvalReport& r) {
   return out;
 }
 
+// The centre circle's and the marks' common figures (both CircleCounts).
 nlohmann::json landmark_json(const CircleCounts& c) {
   return {{"precision", c.precision()},          {"recall", c.recall()},
           {"f1", c.f1()},                        {"detections_scored", c.detections},
