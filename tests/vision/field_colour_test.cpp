@@ -439,8 +439,59 @@ TEST(FieldColour, BrightCarpetLeavesThePaintRoomBelowWhite) {
   EXPECT_EQ(bright.classify(220, 128, 128, cell), ColourClass::kOther) << "grey just above the carpet is no paint";
   // Sun and shade across the view: a spread of 30 would ask for 113 + 90; half the headroom is 71.
   EXPECT_EQ(classifier_for(113, 30).line_y_min(cell), 113 + 71);
-  // The floor stays line_margin even right under white.
-  EXPECT_EQ(classifier_for(240, 2).line_y_min(cell), 268) << "above 255: no line in that cell";
+  // Right under white the floor, line_margin, would ask for more than 255 (val_s101 frame 1164:
+  // sunlit carpet at Y 227–230, its paint clipped at 255, no line at all). The threshold stops at
+  // line_y_max, and above the carpet: chroma tells the paint from the saturated carpet.
+  const AdaptiveClassifier white = classifier_for(232, 2);
+  EXPECT_EQ(white.line_y_min(cell), 245);
+  EXPECT_EQ(white.classify(255, 128, 128, cell), ColourClass::kLine) << "clipped paint";
+  EXPECT_EQ(white.classify(240, 108, 118, cell), ColourClass::kField) << "carpet brighter still is carpet";
+  EXPECT_EQ(white.classify(255, 128, 128, cell), white.classify_by_comparison(255, 128, 128, cell));
+  EXPECT_EQ(classifier_for(250, 2).line_y_min(cell), 251) << "never at the carpet's own luminance";
+  AdaptiveColourParams uncapped;
+  uncapped.line_y_max = 255 + 28;
+  FieldColourEstimate e;
+  e.valid = true;
+  e.y = 232;
+  e.u = 108;
+  e.v = 118;
+  e.y_spread = 2;
+  e.cell_y.fill(232);
+  e.field_cells = ~std::uint64_t{0};
+  AdaptiveClassifier before(uncapped);
+  before.build(e, 640, 480);
+  EXPECT_EQ(before.line_y_min(cell), 260) << "without the cap: no line in that cell";
+  EXPECT_EQ(before.classify(255, 128, 128, cell), ColourClass::kOther);
+}
+
+// Sun and shade in large patches (val_s101 frame 1082): the frame's field is the sunlit carpet
+// (Y 157, U 68), and a cell wholly in shade has the shade's luminance as its carpet (Y 94), its
+// chroma (U 96) 0.55 of the sunlit one: pale. Pale chroma is field where darker than the field in
+// light; measured against the shaded cell's own carpet (0.85 × 94) the shade itself was "other",
+// and a line across it had no field on either side.
+TEST(FieldColour, ShadeInACellWhollyInShadeIsField) {
+  FieldColourEstimate e;
+  e.valid = true;
+  e.source = ColourSource::kFrame;
+  e.y = 157;
+  e.u = 68;
+  e.v = 130;
+  e.y_spread = 9;
+  e.uv_spread = 2;
+  e.cell_y.fill(157);
+  const int shade = 3 * kColourCellsX + 4;
+  e.cell_y[static_cast<std::size_t>(shade)] = 94;
+  e.field_cells = ~std::uint64_t{0};
+  AdaptiveClassifier adaptive;
+  adaptive.build(e, 640, 480);
+  EXPECT_EQ(adaptive.classify(99, 96, 126, shade), ColourClass::kField) << "the shade";
+  EXPECT_EQ(adaptive.classify(99, 96, 126, shade), adaptive.classify_by_comparison(99, 96, 126, shade));
+  EXPECT_EQ(adaptive.classify(130, 126, 128, shade), ColourClass::kLine) << "paint in the shade: 94 + 28 and more";
+  EXPECT_EQ(adaptive.classify(182, 69, 129, 0), ColourClass::kField) << "the sunlit carpet";
+  // Still: pale chroma as bright as the field in light is no carpet (a robot's tinted shell).
+  EXPECT_EQ(adaptive.classify(140, 98, 129, 0), ColourClass::kOther);
+  EXPECT_EQ(adaptive.classify(140, 98, 129, 0), adaptive.classify_by_comparison(140, 98, 129, 0));
+  EXPECT_EQ(adaptive.classify(99, 98, 129, 0), ColourClass::kField) << "the same chroma in shade";
 }
 
 TEST(FieldColour, TableModeNeverEstimates) {

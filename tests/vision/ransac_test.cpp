@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -553,6 +554,39 @@ TEST(Ransac, AFarArcIsJudgedOnItsTangentsWhenItsBendIsLostInNoise) {
   }
   ASSERT_GE(members.size(), 12U);
   EXPECT_FALSE(CentreCircleFinder::judge({{4.5, 0.4}, 0.75}, line, members, params, scratch, true).seen);
+}
+
+// A piece that bends like 40° of the centre circle, too little of it for the circle to be judged
+// seen. Its paint decides: where it turns with the arc's tangents, an arc (never a line); where it
+// keeps one direction, a line bent by stray points (val_s101 frame 1025: the goal post's foot at
+// the end of a near line), reported as a line.
+TEST(Ransac, ABendOfNoCircleIsAnArcOnlyWhereItsPaintTurns) {
+  const hal::RobotPoint centre{1.6, 0.3};
+  const double from = -110.0 * std::numbers::pi / 180.0, span = 40.0 * std::numbers::pi / 180.0;
+  for (const bool turning : {true, false}) {
+    SplitMix64 rng(5);
+    std::vector<CandidatePoint> pts;
+    add_arc(pts, centre, 0.75, from, span, 0.01, 0.0, rng);
+    const double mid = from + span / 2.0;
+    for (CandidatePoint& p : pts) {
+      const double a = turning ? std::atan2(p.ground.y - centre.y, p.ground.x - centre.x) : mid;
+      const double dx = -std::sin(a), dy = std::cos(a);  // the tangent there, or at the middle
+      p.ground_along = {0.01 * dx, 0.01 * dy};
+      p.ground_across = {-0.01 * dy, 0.01 * dx};
+    }
+    const LineSet out = run(pts, {}, 3);
+    EXPECT_FALSE(out.circle.seen);
+    if (turning) {
+      EXPECT_EQ(out.count, 0U) << describe(out);
+      EXPECT_GE(out.stats.arcs_rejected, 1);
+    } else {
+      EXPECT_EQ(out.count, 1U) << describe(out);
+      EXPECT_EQ(out.stats.arcs_rejected, 0);
+    }
+    RansacParams bend_only;  // the bend alone decides: an arc either way
+    bend_only.arc_line_direction_ratio = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(run(pts, bend_only, 3).count, 0U);
+  }
 }
 
 // Two lines of a corner, each short enough for the tangent test: a circle nestled in the corner

@@ -33,7 +33,7 @@ int line_threshold(int fy, int spread, const AdaptiveColourParams& p) noexcept {
   const int margin = std::max({p.line_margin, static_cast<int>(std::lround(p.line_margin_k * spread)),
                                static_cast<int>(std::lround(p.line_margin_ratio * fy))});
   const int headroom = std::max(p.line_margin, static_cast<int>(std::lround(p.line_headroom * (255 - fy))));
-  return fy + std::min(margin, headroom);
+  return std::max(std::min(fy + std::min(margin, headroom), p.line_y_max), fy + 1);
 }
 
 std::uint8_t clamp_byte(long x) noexcept { return static_cast<std::uint8_t>(std::clamp(x, 0L, 255L)); }
@@ -287,7 +287,11 @@ void AdaptiveClassifier::build(const FieldColourEstimate& e, int width, int heig
     const int field_lo = fy - std::max(p.field_y_below, static_cast<int>(std::lround(p.field_y_k * spread_y)));
     line_y_[static_cast<std::size_t>(c)] = line_y;
     field_lo_[static_cast<std::size_t>(c)] = field_lo;
-    const long pale_y256 = rule_.pale_y256(fy);
+    // Pale chroma is shade where darker than the field in light: the brighter of the cell's carpet
+    // and the frame's. A cell wholly in shade has the shade's luminance as its carpet, and its
+    // shade (at 0.55 of the sunlit chroma: val_s101 frame 1082) would be "other" against itself
+    // (0.85 of it); the estimate judged its samples against the frame's field luminance too.
+    const long pale_y256 = rule_.pale_y256(std::max(fy, static_cast<int>(e.y)));
     pale_y256_[static_cast<std::size_t>(c)] = pale_y256;
     std::uint8_t* luma = luma_.data() + cell_offset(c);
     for (int y = 0; y < 256; ++y) {

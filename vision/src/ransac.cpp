@@ -4,6 +4,7 @@
 // After all rounds collinear segments are merged.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "ringlet/hal/portable_math.hpp"
@@ -52,6 +53,19 @@ RansacScratch::RansacScratch(std::size_t capacity) : arc_scratch_(capacity) {
 double RansacLineFinder::tan_deg(double deg) noexcept { return std::tan(deg * std::numbers::pi / 180.0); }
 
 double RansacLineFinder::direction_tan(double max_deg) noexcept { return max_deg > 0.0 ? tan_deg(max_deg) : -1.0; }
+
+double RansacLineFinder::paint_rms(double dx, double dy, std::span<const int> members) const noexcept {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const int p : members) {
+    if (!has_direction(p)) continue;
+    const PaintOffset o = paint_offset(dx, dy, p);
+    const double t = o.off / std::max(o.on, 1e-12);
+    sum += t * t;
+    ++n;
+  }
+  return n == 0 ? std::numeric_limits<double>::infinity() : std::sqrt(sum / static_cast<double>(n));
+}
 
 double RansacLineFinder::tangent_rms(const CentreCircle& c, std::span<const int> members) const noexcept {
   double sum = 0.0;
@@ -292,7 +306,18 @@ bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece,
         if (near || std::binary_search(s.arc_.begin(), s.arc_.end(), p)) s.circle_members_.push_back(p);
       }
     };
-    if (const CentreCircle judged = refine_and_judge(*circle, gather, false); judged.seen) accept(judged);
+    if (const CentreCircle judged = refine_and_judge(*circle, gather, false); judged.seen) {
+      accept(judged);
+      return true;
+    }
+    // It bends like an arc of a circle the frame does not show. Its paint says which it is: along
+    // an arc it turns with the tangent, along a line bent by a few stray points (a goal post's
+    // foot, a robot's) it keeps the line's direction.
+    const CentreCircle arc{.seen = true, .centre = circle->centre, .radius_m = circle->radius};
+    if (paint_rms(line.dx, line.dy, piece) * params_.arc_line_direction_ratio < tangent_rms(arc, piece)) {
+      --out.stats.arcs_rejected;
+      return false;
+    }
     return true;
   }
   // No bend shows: a short piece of a far circle looks straight. It is an arc only if the circle

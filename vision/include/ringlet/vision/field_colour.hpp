@@ -69,7 +69,8 @@ struct AdaptiveColourParams {
   double cone_slope = 0.2;
   // Shade scales chroma with brightness (t ≈ Y / field Y). Field chroma paler than pale_t of the
   // field's (grey with a tint: a ball's white, a robot's shell, bluish white balance) is field only
-  // where the pixel is darker than pale_y_ratio × the local field Y, i.e. where it could be shade.
+  // where the pixel is darker than pale_y_ratio × the field's Y in light (the brighter of the cell's
+  // carpet and the frame's field), i.e. where it could be shade.
   double pale_t = 0.6;
   double pale_y_ratio = 0.85;
   int field_y_below = 80;             // field: Y ≥ local field Y − max(this, k·spread) (no upper
@@ -79,6 +80,9 @@ struct AdaptiveColourParams {
   double line_margin_ratio = 0.25;
   double line_headroom = 0.5;         // ... but at most this share of (255 − local field Y), and at
                                       // least line_margin: bright carpet leaves clipped paint little room
+  int line_y_max = 245;               // ... and never above this (nor at the carpet's Y or below it): on
+                                      // carpet near white (sun, overexposure) paint clipped at 250–255
+                                      // is told from it by its chroma alone
   int line_max_chroma = 36;           // line: |U − 128| and |V − 128| within this (unsaturated; real
                                       // bluish-white lines have U down to 95)
   YuvRange ball{40, 235, 0, 118, 158, 255};  // the orange ball option: an absolute box (ColourThresholds)

@@ -64,6 +64,9 @@ struct RansacParams {
   double tangent_circle_min_range_m = 2.0;  // ... and this far away (nearer, the bend shows)
   double tangent_max_rms_deg = 9.5;  //   and its points' paint must follow the tangent this
                                      //   closely (RMS): lines of a corner pass only the gate
+  double arc_line_direction_ratio = 1.5;  // a piece that bends like an arc of no circle the frame
+                                     //   shows stays a line when its points' paint follows the line
+                                     //   this many times more closely (RMS) than the arc's tangents
   double arc_near_share = 0.5;       // a piece with this share of its points within twice the
                                      //   tolerance of the known circle is part of it
   std::uint64_t seed = 0x52494E474C4554ULL;  // "RINGLET"; per frame: SplitMix64::for_frame
@@ -160,6 +163,9 @@ class RansacLineFinder {
     const hal::RobotPoint& u = scratch_.along_[static_cast<std::size_t>(p)];
     return u.x != 0.0 || u.y != 0.0;
   }
+  /// RMS over `members` (those whose paint's direction is known; none: infinity) of the tangent
+  /// of the angle, in the picture, between their paint and the ground direction (dx, dy).
+  [[nodiscard]] double paint_rms(double dx, double dy, std::span<const int> members) const noexcept;
   /// RMS over `members` of the tangent of the angle, in the picture, between their paint and
   /// the circle's tangent.
   [[nodiscard]] double tangent_rms(const CentreCircle& c, std::span<const int> members) const noexcept;
