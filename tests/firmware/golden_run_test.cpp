@@ -109,8 +109,10 @@ constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0x2b3a1ae0c646d27a
 // across a line out of it (issue 10): other lines reach the filter, and both SPL hashes changed.
 // Then colour cells with 3 field samples (was 8) have their own carpet luminance and lines, and
 // the centre circle's work has its own cost row (a faster stage): both SPL hashes changed.
-constexpr Golden kSplField{"spl_field.toml (4 s)", 0xe72220c060e76403ULL, 0x001ea6baab98d3e7ULL};
-constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0xa29917dd87233a18ULL, 0x86e4af0d3a7987b2ULL};
+// Then the scan's edge test counts the saturation the paint has less than the carpet too (sunlit
+// carpet near white): other candidates reach RANSAC, and both SPL hashes changed.
+constexpr Golden kSplField{"spl_field.toml (4 s)", 0xd19ba29445b07063ULL, 0x7434d80351b86734ULL};
+constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x7638c95f962a46a4ULL, 0x58466e22d270af31ULL};
 
 // The hybrid controller (planner + arbiter under Navigate): the courtyard's whole mission, and the
 // first 30 s of P&B's test world (the dead end found and planned around) and of the woods.

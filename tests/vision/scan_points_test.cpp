@@ -182,6 +182,42 @@ TEST(ScanPoints, EdgeThresholdRefusesFaintRuns) {
   EXPECT_EQ(s.stats.rejected_edge, 320);
 }
 
+// Sunlit carpet near white (val2_s101 frame 1385: carpet Y 230–236 U 50, the paint Y 254 U 124):
+// the paint is only 18 brighter, less than edge_threshold, but far less saturated. The chroma
+// term finds it; luminance alone found nothing.
+TEST(ScanPoints, PaintOnSunlitCarpetIsFoundByItsChroma) {
+  Camera cam;
+  testing::Scene scene;
+  scene.lines = {{{1.5, -3.0}, {1.5, 3.0}}};
+  testing::Frame f = testing::render(scene, cam, hal::PixelFormat::kYuyv);
+  for (std::size_t i = 0; i + 3 < f.bytes.size(); i += 4) {  // Y0 U Y1 V
+    const bool paint = f.bytes[i] > 150 || f.bytes[i + 2] > 150;
+    for (const std::size_t y : {i, i + 2}) f.bytes[y] = f.bytes[y] > 150 ? 254 : 236;
+    f.bytes[i + 1] = paint ? 124 : 50;
+    f.bytes[i + 3] = paint ? 128 : 131;
+  }
+  ColourThresholds sunlit;
+  sunlit.field = {200, 245, 30, 70, 120, 140};
+  sunlit.line = {246, 255, 110, 140, 110, 140};
+  const ColourTable table = ColourTable::from_thresholds(sunlit);
+  std::vector<int> rows(640);
+  const int first = horizon_rows(cam.k, cam.pose(), 2, rows);
+  ClassImage classes(640, 480);
+  ASSERT_TRUE(classes.classify(f.view, table, first, 1));
+  const auto candidates = [&](double chroma_weight) {
+    ScanParams params;
+    params.horizontal = false;
+    params.edge_chroma_weight = chroma_weight;
+    CandidateBuffer out(4096);
+    LineScanner scanner(640);
+    const ScanStats stats = scanner.scan(classes, f.view, cam.k, cam.pose(), rows, params, out);
+    EXPECT_EQ(stats.runs, 320);
+    return out.size();
+  };
+  EXPECT_EQ(candidates(ScanParams{}.edge_chroma_weight), 320U);
+  EXPECT_EQ(candidates(0.0), 0U) << "Y alone: 254 − 236 < 24";
+}
+
 TEST(ScanPoints, CoarserGridStillFindsTheLine) {
   Camera cam;
   testing::Scene scene;

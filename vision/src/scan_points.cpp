@@ -4,6 +4,7 @@
 // and the frame's luminance run once per run, never per pixel.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "ringlet/vision/scan_points.hpp"
@@ -41,6 +42,8 @@ struct ScanLine {
     return direction == ScanDirection::kVertical ? hal::Pixel{across, along} : hal::Pixel{along, across};
   }
 };
+
+int saturation(const Yuv& p) noexcept { return std::abs(p.u - 128) + std::abs(p.v - 128); }
 
 double dist(const hal::RobotPoint& a, const hal::RobotPoint& b) noexcept {
   const double dx = a.x - b.x, dy = a.y - b.y;
@@ -127,9 +130,15 @@ void emit(const Context& ctx, const ScanLine& line, int a, int b) noexcept {
   const int before = std::max(a - ctx.params.edge_offset * s, line.begin);
   const int after = std::min(b + ctx.params.edge_offset * s, line.last);
   const int mid = a + (b - a) / (2 * s) * s;
-  const int y_in = luma_at(ctx.frame, line.x(mid), line.y(mid));
-  const int rise = y_in - luma_at(ctx.frame, line.x(before), line.y(before));
-  const int fall = y_in - luma_at(ctx.frame, line.x(after), line.y(after));
+  // The step into the paint and out of it: luminance, plus the saturation the carpet loses there.
+  const Yuv in = yuv_at(ctx.frame, line.x(mid), line.y(mid));
+  const auto step_from = [&](int p) {
+    const Yuv o = yuv_at(ctx.frame, line.x(p), line.y(p));
+    const int paler = saturation(o) - saturation(in);
+    return in.y - o.y + (paler > 0 ? static_cast<int>(ctx.params.edge_chroma_weight * paler) : 0);
+  };
+  const int rise = step_from(before);
+  const int fall = step_from(after);
   if (rise < ctx.params.edge_threshold || fall < ctx.params.edge_threshold) {
     ++ctx.stats.rejected_edge;
     return;

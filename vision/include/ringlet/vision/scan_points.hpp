@@ -16,9 +16,13 @@ namespace ringlet::vision {
 struct ScanParams {
   int stride = 2;                   // px between scan lines (rounded up to a multiple of the class step)
   bool horizontal = true;           // also scan rows (lines running down the image)
-  int edge_threshold = 24;          // min Y rise into and fall out of the run (the line's centre
-                                    // vs `edge_offset` samples outside it)
-  int edge_offset = 2;              // samples outside the run where the background Y is read
+  int edge_threshold = 24;          // min step into and out of the run: the line's centre vs
+                                    // `edge_offset` samples outside it, its rise in Y plus
+  double edge_chroma_weight = 0.5;  //   this × the saturation (|U − 128| + |V − 128|) it has less:
+                                    //   on sunlit carpet near white the paint differs mostly in
+                                    //   chroma (val2_s101 frame 1385: carpet Y 230 U 50, paint
+                                    //   Y 254 U 124; with Y alone no candidate on its 450 px)
+  int edge_offset = 2;              // samples outside the run where the background is read
   int max_gap = 2;                  // samples of neither field nor line allowed between green and
                                     // white (blurred edges)
   double line_width_m = 0.05;       // painted line width
