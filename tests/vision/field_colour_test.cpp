@@ -349,22 +349,28 @@ TEST(FieldColour, AWideLineFillingACellIsNotThatCellsCarpet) {
   EXPECT_EQ(adaptive.classify(100, 100, 124, cell), ColourClass::kField);
 }
 
+// A measured estimate of one field colour (Y, U, V) and luminance spread over every cell, each
+// holding field.
+FieldColourEstimate uniform_estimate(int y, int u, int v, int spread) {
+  FieldColourEstimate e;
+  e.valid = true;
+  e.source = ColourSource::kFrame;
+  e.y = static_cast<std::uint8_t>(y);
+  e.u = static_cast<std::uint8_t>(u);
+  e.v = static_cast<std::uint8_t>(v);
+  e.y_spread = static_cast<std::uint8_t>(spread);
+  e.uv_spread = 2;
+  e.cell_y.fill(static_cast<std::uint8_t>(y));
+  e.field_cells = ~std::uint64_t{0};
+  return e;
+}
+
 // Shade scales chroma with brightness. A pixel with a fraction of the field's chroma is shaded
 // carpet when it is darker than the field, but a tinted grey (a ball's white in warm light, a
 // robot's shell) when it is as bright or brighter.
 TEST(FieldColour, PaleFieldChromaIsFieldOnlyInShade) {
-  FieldColourEstimate e;
-  e.valid = true;
-  e.source = ColourSource::kFrame;
-  e.y = 100;
-  e.u = 108;  // field chroma (−20, −10)
-  e.v = 118;
-  e.y_spread = 4;
-  e.uv_spread = 2;
-  e.cell_y.fill(100);
-  e.field_cells = ~std::uint64_t{0};
   AdaptiveClassifier adaptive;
-  adaptive.build(e, 640, 480);
+  adaptive.build(uniform_estimate(100, 108, 118, 4), 640, 480);  // field chroma (−20, −10)
   const int cell = 20;
   // Chroma (−10, −6), a chroma bin's centre: 0.52 of the field's.
   EXPECT_EQ(adaptive.classify(50, 118, 122, cell), ColourClass::kField);    // shade
@@ -410,20 +416,10 @@ TEST(FieldColour, SunlitCarpetWithAlmostThreeTimesTheShadesChromaIsField) {
   EXPECT_EQ((e_old.field_cells >> cell) & 1U, 0U);
 }
 
-// An estimate of uniform field luminance `y` and luminance spread `spread` over every cell.
-AdaptiveClassifier classifier_for(int y, int spread) {
-  FieldColourEstimate e;
-  e.valid = true;
-  e.source = ColourSource::kFrame;
-  e.y = static_cast<std::uint8_t>(y);
-  e.u = 108;
-  e.v = 118;
-  e.y_spread = static_cast<std::uint8_t>(spread);
-  e.uv_spread = 2;
-  e.cell_y.fill(static_cast<std::uint8_t>(y));
-  e.field_cells = ~std::uint64_t{0};
-  AdaptiveClassifier adaptive;
-  adaptive.build(e, 640, 480);
+// The classifier for a uniform field luminance `y` and luminance spread `spread` over every cell.
+AdaptiveClassifier classifier_for(int y, int spread, const AdaptiveColourParams& params = {}) {
+  AdaptiveClassifier adaptive(params);
+  adaptive.build(uniform_estimate(y, 108, 118, spread), 640, 480);
   return adaptive;
 }
 
@@ -450,16 +446,7 @@ TEST(FieldColour, BrightCarpetLeavesThePaintRoomBelowWhite) {
   EXPECT_EQ(classifier_for(250, 2).line_y_min(cell), 251) << "never at the carpet's own luminance";
   AdaptiveColourParams uncapped;
   uncapped.line_y_max = 255 + 28;
-  FieldColourEstimate e;
-  e.valid = true;
-  e.y = 232;
-  e.u = 108;
-  e.v = 118;
-  e.y_spread = 2;
-  e.cell_y.fill(232);
-  e.field_cells = ~std::uint64_t{0};
-  AdaptiveClassifier before(uncapped);
-  before.build(e, 640, 480);
+  const AdaptiveClassifier before = classifier_for(232, 2, uncapped);
   EXPECT_EQ(before.line_y_min(cell), 260) << "without the cap: no line in that cell";
   EXPECT_EQ(before.classify(255, 128, 128, cell), ColourClass::kOther);
 }
@@ -470,18 +457,9 @@ TEST(FieldColour, BrightCarpetLeavesThePaintRoomBelowWhite) {
 // light; measured against the shaded cell's own carpet (0.85 × 94) the shade itself was "other",
 // and a line across it had no field on either side.
 TEST(FieldColour, ShadeInACellWhollyInShadeIsField) {
-  FieldColourEstimate e;
-  e.valid = true;
-  e.source = ColourSource::kFrame;
-  e.y = 157;
-  e.u = 68;
-  e.v = 130;
-  e.y_spread = 9;
-  e.uv_spread = 2;
-  e.cell_y.fill(157);
+  FieldColourEstimate e = uniform_estimate(157, 68, 130, 9);
   const int shade = 3 * kColourCellsX + 4;
   e.cell_y[static_cast<std::size_t>(shade)] = 94;
-  e.field_cells = ~std::uint64_t{0};
   AdaptiveClassifier adaptive;
   adaptive.build(e, 640, 480);
   EXPECT_EQ(adaptive.classify(99, 96, 126, shade), ColourClass::kField) << "the shade";

@@ -6,7 +6,9 @@
 // The camera that took the picture is given by flags (image size, field of view or fx/fy/cx/cy,
 // mount, head yaw and pitch, the torso's pitch and roll from the inertial unit): the pipeline
 // needs them to find the horizon and put points on the ground. Defaults are the NAO's head camera
-// at 20° pitch on an upright torso.
+// at 20° pitch on an upright torso. --dataset-frame takes a ringlet-dataset frame instead, with its
+// camera, and runs it exactly as ringlet-vision-eval does (its YUYV, its index as the frame's
+// sequence): where the evaluation missed a line, this shows why.
 //
 // Exit codes: 0 done (warnings, e.g. a grey picture, go to stderr and the JSON's "warnings") ·
 // 2 bad input (flags, unreadable or truncated image, wrong image size, missing or corrupt colour
@@ -15,6 +17,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <iomanip>
+#include <numbers>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -23,6 +26,7 @@
 #include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "class_drawing.hpp"
+#include "dataset_frame.hpp"
 #include "vision_io.hpp"
 
 namespace {
@@ -32,6 +36,7 @@ using namespace ringlet::vision;
 
 struct Options {
   std::string image;
+  std::string dataset_frame;
   std::string lut;
   std::string overlay;
   std::string classes;
@@ -47,19 +52,55 @@ struct Options {
   std::string robot_model;
 };
 
+/// The picture and the camera that took it: from the image file and the camera flags, or from a
+/// dataset frame (its picture converted to YUYV, as the evaluation runs it).
+struct Input {
+  std::string name;              // what the JSON and the messages call it
+  cv::Mat bgr;                   // the picture as read (drawings)
+  std::vector<std::uint8_t> yuyv;  // a dataset frame's camera frame; empty: the pipeline takes bgr
+  std::vector<std::string> warnings;
+  hal::CameraIntrinsics intrinsics{};
+  hal::CameraMount mount{};
+  hal::CameraPosture posture{};
+  std::uint64_t sequence = 0;
+};
+
+Input read_input(const Options& o) {
+  Input in;
+  if (o.dataset_frame.empty()) {
+    in.name = o.image;
+    in.intrinsics = o.camera.intrinsics();
+    in.mount = o.camera.mount;
+    in.posture = o.camera.posture();
+    tools::LoadedImage image = tools::load_frame(o.image, in.intrinsics.width, in.intrinsics.height);
+    in.bgr = std::move(image.bgr);
+    in.warnings = std::move(image.warnings);
+    return in;
+  }
+  evaluate::LoadedFrame f = evaluate::load_frame(o.dataset_frame);
+  in.name = o.dataset_frame;
+  in.intrinsics = f.meta.intrinsics;
+  in.mount = f.meta.mount;
+  in.posture = {hal::BodyTilt{}, f.meta.head};  // what ringlet-vision-eval gives the pipeline
+  in.sequence = f.meta.index;
+  in.bgr = std::move(f.bgr);
+  in.yuyv = std::move(f.yuyv);
+  return in;
+}
+
 int run(const Options& o) {
   VisionConfig config;
-  config.intrinsics = o.camera.intrinsics();
-  config.mount = o.camera.mount;
+  // Both are checked before anything runs, so a bad table or image never gives partial output.
+  ColourTable table = tools::load_table(o.lut);
+  const Input input = read_input(o);
+  config.intrinsics = input.intrinsics;
+  config.mount = input.mount;
   config.ransac.seed = o.seed;
   config.ransac.max_trials = o.max_trials;
   config.ransac.skip = o.skip;
-  // Both are checked before anything runs, so a bad table or image never gives partial output.
-  ColourTable table = tools::load_table(o.lut);
   if (!o.lut.empty()) config.colour_mode = ColourMode::kTable;  // a calibrated table is used as it is
-  const tools::LoadedImage image = tools::load_frame(o.image, config.intrinsics.width, config.intrinsics.height);
-  for (const std::string& w : image.warnings) std::cerr << "ringlet-vision: warning: " << o.image << ": " << w << "\n";
-  const cv::Mat& bgr = image.bgr;
+  for (const std::string& w : input.warnings) std::cerr << "ringlet-vision: warning: " << input.name << ": " << w << "\n";
+  const cv::Mat& bgr = input.bgr;
 
   config.ball.mode = o.ball_mode == "orange" ? BallMode::kOrange : BallMode::kBlackWhite;
   std::vector<HogSvm> models;
@@ -70,13 +111,19 @@ int run(const Options& o) {
   for (HogSvm& m : models) {
     if (const std::string why = pipeline.set_classifier(std::move(m)); !why.empty()) throw tools::ToolError(why);
   }
-  const hal::CameraPosture posture = o.camera.posture();
+  const hal::CameraPosture& posture = input.posture;
   // Stages are timed on this thread's CPU clock (what the robot's budget is judged on; other
   // processes on the host do not inflate it), the whole frame on the wall clock too. The deadline
   // never expires: a desktop run does all the work.
   hal::ThreadStopwatch watch;
   const Deadline timed{&watch, hal::Nanos::max(), true};
-  const hal::FrameView view = tools::frame_view(bgr);
+  hal::FrameView view = tools::frame_view(bgr);
+  if (!input.yuyv.empty()) {
+    view.format = hal::PixelFormat::kYuyv;
+    view.stride = 2 * view.width;
+    view.data = input.yuyv.data();
+  }
+  view.sequence = input.sequence;
   std::vector<hal::Nanos> cpu, wall;
   std::vector<std::vector<hal::Nanos>> stages(kStageCount);
   cpu.reserve(static_cast<std::size_t>(o.repeat));
@@ -90,15 +137,17 @@ int run(const Options& o) {
   }
   const VisionResult& result = pipeline.result();  // the same every time: the frame's seed is fixed
   nlohmann::json out = tools::result_json(result);
-  out["image"] = o.image;
-  out["posture_deg"] = {{"head_yaw", o.camera.yaw_deg},
-                        {"head_pitch", o.camera.pitch_deg},
-                        {"body_pitch", o.camera.body_pitch_deg},
-                        {"body_roll", o.camera.body_roll_deg}};
+  out["image"] = input.name;
+  if (!o.dataset_frame.empty()) out["sequence"] = input.sequence;
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  out["posture_deg"] = {{"head_yaw", posture.head.yaw * kDeg},
+                        {"head_pitch", posture.head.pitch * kDeg},
+                        {"body_pitch", posture.body.pitch * kDeg},
+                        {"body_roll", posture.body.roll * kDeg}};
   out["time_ms"] = tools::stage_times_json(result);
   out["time_ms"]["wall"] = static_cast<double>(wall.back().count()) / 1e6;
   out["time_clock"] = "stages and total: this thread's CPU time; wall: the monotonic clock";
-  if (!image.warnings.empty()) out["warnings"] = image.warnings;
+  if (!input.warnings.empty()) out["warnings"] = input.warnings;
   if (o.draw_candidates) {
     nlohmann::json points = nlohmann::json::array();
     for (const CandidatePoint& c : pipeline.candidates().points()) points.push_back({c.pixel.u, c.pixel.v});
@@ -144,7 +193,14 @@ int main(int argc, char** argv) {
   CLI::App app{"ringlet-vision: detect field lines, the centre circle and the ball in one image (PNG or JPEG) "
                "with Ringlet's pipeline; prints JSON on stdout. Exit codes: 0 done, 2 bad input "
                "(flags, image, colour table, model files), 1 internal or output error."};
-  app.add_option("image", o.image, "the picture (PNG, JPEG, ...), as the camera delivered it")->required();
+  CLI::Option* image = app.add_option("image", o.image, "the picture (PNG, JPEG, ...), as the camera delivered it");
+  CLI::Option* dataset_frame =
+      app.add_option("--dataset-frame", o.dataset_frame,
+                     "instead of an image: a ringlet-dataset frame (frame_NNNN.json), run with its own camera, "
+                     "converted to YUYV and with its index as the frame's sequence, exactly as ringlet-vision-eval "
+                     "runs it (the camera flags do not go with it)");
+  image->excludes(dataset_frame);
+  dataset_frame->excludes(image);
   app.add_option("--lut", o.lut, "colour table file (RLUT, from ringlet-vision-calibrate); default: the built-in "
                                  "default thresholds");
   app.add_option("--overlay", o.overlay, "also write the picture with the detections drawn over it (PNG or JPEG)");
@@ -171,5 +227,12 @@ int main(int argc, char** argv) {
                                                  "vision/models/robot.hog; default: none, candidates unverified)");
   app.add_flag("--compact", o.compact, "one-line JSON");
   o.camera.add_to(app);
+  for (const char* flag : {"--width", "--height", "--hfov", "--vfov", "--fx", "--fy", "--cx", "--cy", "--pivot-height",
+                           "--camera-forward", "--camera-up", "--body-pitch", "--body-roll", "--yaw", "--pitch"}) {
+    dataset_frame->excludes(app.get_option(flag));  // the frame says which camera took it
+  }
+  app.callback([&] {
+    if (o.image.empty() && o.dataset_frame.empty()) throw CLI::RequiredError("image (or --dataset-frame)");
+  });
   return tools::run_tool(app, argc, argv, "ringlet-vision", [&] { return run(o); });
 }

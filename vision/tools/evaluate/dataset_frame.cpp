@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ringlet/hal/read_file.hpp"
+#include "ringlet/hal/yuv.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -29,6 +30,29 @@ std::vector<fs::path> list_dataset_frames(const fs::path& dir) {
     return x.size() != y.size() ? x.size() < y.size() : x < y;
   });
   return out;
+}
+
+LoadedFrame load_frame(const fs::path& json) {
+  LoadedFrame f;
+  f.meta = load_dataset_frame(json);
+  const hal::CameraIntrinsics& k = f.meta.intrinsics;
+  if (k.width % 2 != 0) throw ToolError(json.string() + ": odd image width, YUYV needs pixel pairs");
+  f.bgr = tools::load_bgr(f.meta.picture, k.width, k.height);
+  if (!f.bgr.isContinuous()) f.bgr = f.bgr.clone();
+  f.yuyv.resize(static_cast<std::size_t>(k.width) * static_cast<std::size_t>(k.height) * 2U);
+  hal::bgr_to_yuyv({f.bgr.data, f.bgr.total() * 3U}, k.width, k.height, f.yuyv);
+  return f;
+}
+
+hal::FrameView yuyv_view(const LoadedFrame& f) {
+  hal::FrameView v;
+  v.sequence = f.meta.index;
+  v.format = hal::PixelFormat::kYuyv;
+  v.width = f.meta.intrinsics.width;
+  v.height = f.meta.intrinsics.height;
+  v.stride = 2 * v.width;
+  v.data = f.yuyv.data();
+  return v;
 }
 
 double projected_half_width(const hal::CameraIntrinsics& k, const hal::CameraPose& pose, const hal::RobotPoint& at,

@@ -3,10 +3,14 @@
 // picture. The truth for line detectors is the JSON's visible straight-line runs as image segments
 // with their painted width projected into the image; the balls' and robots' truth for the object
 // scores (object_score.hpp).
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
+#include "ringlet/hal/camera.hpp"
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/sensors.hpp"
 #include "circle_score.hpp"
@@ -42,6 +46,23 @@ struct DatasetFrame {
 /// Reads one frame's JSON. ToolError naming the file on a read or parse error, a missing field, or
 /// a picture format other than png.
 [[nodiscard]] DatasetFrame load_dataset_frame(const std::filesystem::path& json);
+
+/// A frame with its picture, as the evaluation gives it to the detectors: BGR as read (Hough,
+/// drawings) and the YUYV the robot's camera would deliver (hal::bgr_to_yuyv; Ringlet's pipeline).
+struct LoadedFrame {
+  DatasetFrame meta;
+  cv::Mat bgr;
+  std::vector<std::uint8_t> yuyv;
+};
+
+/// load_dataset_frame and its picture. ToolError as there, or naming the picture when it cannot be
+/// read, has another size than the frame's camera, or an odd width (YUYV needs pixel pairs).
+[[nodiscard]] LoadedFrame load_frame(const std::filesystem::path& json);
+
+/// The YUYV picture as a camera frame whose sequence number is the frame's index: the pipeline
+/// derives RANSAC's random stream from it, so every tool that runs a dataset frame this way sees
+/// exactly what the evaluation saw.
+[[nodiscard]] hal::FrameView yuyv_view(const LoadedFrame& f);
 
 /// Half the image width of a painted line `width_m` wide at ground point `at` on a line with unit
 /// ground direction (dx, dy): the two points ±width/2 across it, projected. 0 when either does not

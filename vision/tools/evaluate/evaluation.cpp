@@ -12,7 +12,6 @@
 #include "dataset_frame.hpp"
 #include "frame_identity.hpp"
 #include "ringlet/hal/monotonic_clock.hpp"
-#include "ringlet/hal/yuv.hpp"
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/horizon.hpp"
 #include "vision_io.hpp"
@@ -60,36 +59,6 @@ namespace {
 
 double elapsed_ms(Clock::time_point since) {
   return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
-}
-
-/// A frame ready for both detectors.
-struct LoadedFrame {
-  DatasetFrame meta;
-  cv::Mat bgr;
-  std::vector<std::uint8_t> yuyv;
-};
-
-LoadedFrame load_frame(const fs::path& json) {
-  LoadedFrame f;
-  f.meta = load_dataset_frame(json);
-  const hal::CameraIntrinsics& k = f.meta.intrinsics;
-  if (k.width % 2 != 0) throw tools::ToolError(json.string() + ": odd image width, YUYV needs pixel pairs");
-  f.bgr = tools::load_bgr(f.meta.picture, k.width, k.height);
-  if (!f.bgr.isContinuous()) f.bgr = f.bgr.clone();
-  f.yuyv.resize(static_cast<std::size_t>(k.width) * static_cast<std::size_t>(k.height) * 2U);
-  hal::bgr_to_yuyv({f.bgr.data, f.bgr.total() * 3U}, k.width, k.height, f.yuyv);
-  return f;
-}
-
-hal::FrameView yuyv_view(const LoadedFrame& f) {
-  hal::FrameView v;
-  v.sequence = f.meta.index;
-  v.format = hal::PixelFormat::kYuyv;
-  v.width = f.meta.intrinsics.width;
-  v.height = f.meta.intrinsics.height;
-  v.stride = 2 * v.width;
-  v.data = f.yuyv.data();
-  return v;
 }
 
 bool same_camera(const VisionConfig& c, const DatasetFrame& f) {
