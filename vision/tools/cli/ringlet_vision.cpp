@@ -17,8 +17,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <iomanip>
-#include <numbers>
 #include <iostream>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -62,6 +62,7 @@ struct Input {
   hal::CameraIntrinsics intrinsics{};
   hal::CameraMount mount{};
   hal::CameraPosture posture{};
+  nlohmann::json posture_deg;    // as given: the flags' degrees, or the frame's angles in degrees
   std::uint64_t sequence = 0;
 };
 
@@ -72,6 +73,10 @@ Input read_input(const Options& o) {
     in.intrinsics = o.camera.intrinsics();
     in.mount = o.camera.mount;
     in.posture = o.camera.posture();
+    in.posture_deg = {{"head_yaw", o.camera.yaw_deg},
+                      {"head_pitch", o.camera.pitch_deg},
+                      {"body_pitch", o.camera.body_pitch_deg},
+                      {"body_roll", o.camera.body_roll_deg}};
     tools::LoadedImage image = tools::load_frame(o.image, in.intrinsics.width, in.intrinsics.height);
     in.bgr = std::move(image.bgr);
     in.warnings = std::move(image.warnings);
@@ -82,6 +87,9 @@ Input read_input(const Options& o) {
   in.intrinsics = f.meta.intrinsics;
   in.mount = f.meta.mount;
   in.posture = {hal::BodyTilt{}, f.meta.head};  // what ringlet-vision-eval gives the pipeline
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  in.posture_deg = {{"head_yaw", f.meta.head.yaw * kDeg}, {"head_pitch", f.meta.head.pitch * kDeg},
+                    {"body_pitch", 0.0}, {"body_roll", 0.0}};
   in.sequence = f.meta.index;
   in.bgr = std::move(f.bgr);
   in.yuyv = std::move(f.yuyv);
@@ -139,11 +147,7 @@ int run(const Options& o) {
   nlohmann::json out = tools::result_json(result);
   out["image"] = input.name;
   if (!o.dataset_frame.empty()) out["sequence"] = input.sequence;
-  constexpr double kDeg = 180.0 / std::numbers::pi;
-  out["posture_deg"] = {{"head_yaw", posture.head.yaw * kDeg},
-                        {"head_pitch", posture.head.pitch * kDeg},
-                        {"body_pitch", posture.body.pitch * kDeg},
-                        {"body_roll", posture.body.roll * kDeg}};
+  out["posture_deg"] = input.posture_deg;
   out["time_ms"] = tools::stage_times_json(result);
   out["time_ms"]["wall"] = static_cast<double>(wall.back().count()) / 1e6;
   out["time_clock"] = "stages and total: this thread's CPU time; wall: the monotonic clock";
