@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <memory>
 
+#include "ringlet/vision/class_image.hpp"  // yuv_at
+
 namespace ringlet::vision {
 namespace {
 
@@ -87,24 +89,10 @@ FieldColourEstimate FieldColourEstimator::measure_frame(const hal::FrameView& fr
   int n = 0;
   const int columns = std::min(frame.width, static_cast<int>(first_row.size()));
   for (int y = stride / 2; y < frame.height; y += stride) {
-    const std::uint8_t* row = frame.data + static_cast<std::size_t>(y) * static_cast<std::size_t>(frame.stride);
     const int cell_row = (y * kColourCellsY / frame.height) * kColourCellsX;
     for (int x = stride / 2; x < columns; x += stride) {
       if (y < first_row[static_cast<std::size_t>(x)]) continue;
-      Yuv p{};
-      switch (frame.format) {
-        case hal::PixelFormat::kYuyv: {
-          const std::uint8_t* pair = row + 4 * static_cast<std::size_t>(x / 2);
-          p = {row[2 * static_cast<std::size_t>(x)], pair[1], (x | 1) < frame.width ? pair[3] : std::uint8_t{128}};
-          break;
-        }
-        case hal::PixelFormat::kBgr8: {
-          const std::uint8_t* q = row + 3 * static_cast<std::size_t>(x);
-          p = bgr_to_yuv(q[0], q[1], q[2]);
-          break;
-        }
-        case hal::PixelFormat::kGray8: p = {row[x], 128, 128}; break;
-      }
+      const Yuv p = yuv_at(frame, x, y);
       const std::size_t b = static_cast<std::size_t>(p.u >> (8 - kHistBits)) << kHistBits | (p.v >> (8 - kHistBits));
       ++chroma_hist_[b];
       sum_u_[b] += p.u;

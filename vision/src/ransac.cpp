@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "ringlet/hal/portable_math.hpp"
 #include "ringlet/vision/prng.hpp"
@@ -54,34 +55,37 @@ double RansacLineFinder::tan_deg(double deg) noexcept { return std::tan(deg * st
 
 double RansacLineFinder::direction_tan(double max_deg) noexcept { return max_deg > 0.0 ? tan_deg(max_deg) : -1.0; }
 
-double RansacLineFinder::paint_rms(double dx, double dy, std::span<const int> members) const noexcept {
-  double sum = 0.0;
-  std::size_t n = 0;
+template <class Direction>
+RansacLineFinder::SquaredOffsets RansacLineFinder::squared_offsets(std::span<const int> members,
+                                                                  const Direction& direction) const noexcept {
+  SquaredOffsets acc;
   for (const int p : members) {
     if (!has_direction(p)) continue;
-    const PaintOffset o = paint_offset(dx, dy, p);
+    const auto h = direction(scratch_.points_[static_cast<std::size_t>(p)]);
+    if (!h) continue;
+    const PaintOffset o = paint_offset(h->x, h->y, p);
     const double t = o.off / std::max(o.on, 1e-12);
-    sum += t * t;
-    ++n;
+    acc.sum += t * t;
+    ++acc.n;
   }
-  return n == 0 ? std::numeric_limits<double>::infinity() : std::sqrt(sum / static_cast<double>(n));
+  return acc;
+}
+
+double RansacLineFinder::paint_rms(double dx, double dy, std::span<const int> members) const noexcept {
+  const SquaredOffsets a = squared_offsets(members, [&](const hal::RobotPoint&) {
+    return std::optional<hal::RobotPoint>{{dx, dy}};
+  });
+  return a.n == 0 ? std::numeric_limits<double>::infinity() : std::sqrt(a.sum / static_cast<double>(a.n));
 }
 
 double RansacLineFinder::tangent_rms(const CentreCircle& c, std::span<const int> members) const noexcept {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (const int p : members) {
-    const auto i = static_cast<std::size_t>(p);
-    const hal::RobotPoint& q = scratch_.points_[i];
+  const SquaredOffsets a = squared_offsets(members, [&](const hal::RobotPoint& q) -> std::optional<hal::RobotPoint> {
     const double dx = q.x - c.centre.x, dy = q.y - c.centre.y;
     const double r = norm(dx, dy);
-    if (r <= 0.0 || !has_direction(p)) continue;
-    const PaintOffset o = paint_offset(-dy / r, dx / r, p);  // against the tangent
-    const double t = o.off / std::max(o.on, 1e-12);
-    sum += t * t;
-    ++n;
-  }
-  return n == 0 ? 0.0 : std::sqrt(sum / static_cast<double>(n));
+    if (r <= 0.0) return std::nullopt;
+    return hal::RobotPoint{-dy / r, dx / r};  // the tangent there
+  });
+  return a.n == 0 ? 0.0 : std::sqrt(a.sum / static_cast<double>(a.n));
 }
 
 void RansacLineFinder::remove_from_pool(std::span<const int> members) noexcept {

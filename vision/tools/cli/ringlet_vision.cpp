@@ -19,6 +19,7 @@
 #include <iomanip>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,15 +56,17 @@ struct Options {
 /// The picture and the camera that took it: from the image file and the camera flags, or from a
 /// dataset frame (its picture converted to YUYV, as the evaluation runs it).
 struct Input {
-  std::string name;              // what the JSON and the messages call it
-  cv::Mat bgr;                   // the picture as read (drawings)
-  std::vector<std::uint8_t> yuyv;  // a dataset frame's camera frame; empty: the pipeline takes bgr
-  std::vector<std::string> warnings;
+  std::string name;                              // what the JSON and the messages call it
+  tools::LoadedImage image;                      // an image file ...
+  std::optional<evaluate::LoadedFrame> dataset;  // ... or a dataset frame
   hal::CameraIntrinsics intrinsics{};
   hal::CameraMount mount{};
   hal::CameraPosture posture{};
-  nlohmann::json posture_deg;    // as given: the flags' degrees, or the frame's angles in degrees
-  std::uint64_t sequence = 0;
+  nlohmann::json posture_deg;  // as given: the flags' degrees, or the frame's angles in degrees
+
+  [[nodiscard]] const cv::Mat& bgr() const { return dataset ? dataset->bgr : image.bgr; }
+  /// What the pipeline takes: the image file's BGR, or the dataset frame as the evaluation gives it.
+  [[nodiscard]] hal::FrameView view() const { return dataset ? evaluate::yuyv_view(*dataset) : tools::frame_view(image.bgr); }
 };
 
 Input read_input(const Options& o) {
@@ -77,22 +80,17 @@ Input read_input(const Options& o) {
                       {"head_pitch", o.camera.pitch_deg},
                       {"body_pitch", o.camera.body_pitch_deg},
                       {"body_roll", o.camera.body_roll_deg}};
-    tools::LoadedImage image = tools::load_frame(o.image, in.intrinsics.width, in.intrinsics.height);
-    in.bgr = std::move(image.bgr);
-    in.warnings = std::move(image.warnings);
+    in.image = tools::load_frame(o.image, in.intrinsics.width, in.intrinsics.height);
     return in;
   }
-  evaluate::LoadedFrame f = evaluate::load_frame(o.dataset_frame);
   in.name = o.dataset_frame;
+  const evaluate::LoadedFrame& f = in.dataset.emplace(evaluate::load_frame(o.dataset_frame));
   in.intrinsics = f.meta.intrinsics;
   in.mount = f.meta.mount;
   in.posture = {hal::BodyTilt{}, f.meta.head};  // what ringlet-vision-eval gives the pipeline
   constexpr double kDeg = 180.0 / std::numbers::pi;
   in.posture_deg = {{"head_yaw", f.meta.head.yaw * kDeg}, {"head_pitch", f.meta.head.pitch * kDeg},
                     {"body_pitch", 0.0}, {"body_roll", 0.0}};
-  in.sequence = f.meta.index;
-  in.bgr = std::move(f.bgr);
-  in.yuyv = std::move(f.yuyv);
   return in;
 }
 
@@ -107,8 +105,8 @@ int run(const Options& o) {
   config.ransac.max_trials = o.max_trials;
   config.ransac.skip = o.skip;
   if (!o.lut.empty()) config.colour_mode = ColourMode::kTable;  // a calibrated table is used as it is
-  for (const std::string& w : input.warnings) std::cerr << "ringlet-vision: warning: " << input.name << ": " << w << "\n";
-  const cv::Mat& bgr = input.bgr;
+  for (const std::string& w : input.image.warnings) std::cerr << "ringlet-vision: warning: " << input.name << ": " << w << "\n";
+  const cv::Mat& bgr = input.bgr();
 
   config.ball.mode = o.ball_mode == "orange" ? BallMode::kOrange : BallMode::kBlackWhite;
   std::vector<HogSvm> models;
@@ -125,13 +123,7 @@ int run(const Options& o) {
   // never expires: a desktop run does all the work.
   hal::ThreadStopwatch watch;
   const Deadline timed{&watch, hal::Nanos::max(), true};
-  hal::FrameView view = tools::frame_view(bgr);
-  if (!input.yuyv.empty()) {
-    view.format = hal::PixelFormat::kYuyv;
-    view.stride = 2 * view.width;
-    view.data = input.yuyv.data();
-  }
-  view.sequence = input.sequence;
+  const hal::FrameView view = input.view();
   std::vector<hal::Nanos> cpu, wall;
   std::vector<std::vector<hal::Nanos>> stages(kStageCount);
   cpu.reserve(static_cast<std::size_t>(o.repeat));
@@ -146,12 +138,12 @@ int run(const Options& o) {
   const VisionResult& result = pipeline.result();  // the same every time: the frame's seed is fixed
   nlohmann::json out = tools::result_json(result);
   out["image"] = input.name;
-  if (!o.dataset_frame.empty()) out["sequence"] = input.sequence;
+  if (input.dataset) out["sequence"] = view.sequence;
   out["posture_deg"] = input.posture_deg;
   out["time_ms"] = tools::stage_times_json(result);
   out["time_ms"]["wall"] = static_cast<double>(wall.back().count()) / 1e6;
   out["time_clock"] = "stages and total: this thread's CPU time; wall: the monotonic clock";
-  if (!input.warnings.empty()) out["warnings"] = input.warnings;
+  if (!input.image.warnings.empty()) out["warnings"] = input.image.warnings;
   if (o.draw_candidates) {
     nlohmann::json points = nlohmann::json::array();
     for (const CandidatePoint& c : pipeline.candidates().points()) points.push_back({c.pixel.u, c.pixel.v});
@@ -230,11 +222,7 @@ int main(int argc, char** argv) {
   app.add_option("--robot-model", o.robot_model, "HOG/SVM model verifying robot candidates (e.g. "
                                                  "vision/models/robot.hog; default: none, candidates unverified)");
   app.add_flag("--compact", o.compact, "one-line JSON");
-  o.camera.add_to(app);
-  for (const char* flag : {"--width", "--height", "--hfov", "--vfov", "--fx", "--fy", "--cx", "--cy", "--pivot-height",
-                           "--camera-forward", "--camera-up", "--body-pitch", "--body-roll", "--yaw", "--pitch"}) {
-    dataset_frame->excludes(app.get_option(flag));  // the frame says which camera took it
-  }
+  for (CLI::Option* flag : o.camera.add_to(app)) dataset_frame->excludes(flag);  // the frame says which camera took it
   app.callback([&] {
     if (o.image.empty() && o.dataset_frame.empty()) throw CLI::RequiredError("image (or --dataset-frame)");
   });

@@ -141,7 +141,8 @@ std::string fmt_number(double v) {
   return s.str();
 }
 
-void CameraOptions::add_to(CLI::App& app, bool with_head) {
+std::vector<CLI::Option*> CameraOptions::add_to(CLI::App& app, bool with_head) {
+  const std::size_t before = app.get_options().size();
   app.add_option("--width", width, "image width the camera delivers (px)")->capture_default_str()->check(CLI::Range(2, 4096));
   app.add_option("--height", height, "image height (px)")->capture_default_str()->check(CLI::Range(2, 4096));
   app.add_option("--hfov", hfov_deg, "horizontal field of view (deg), used when --fx is not given")
@@ -173,6 +174,8 @@ void CameraOptions::add_to(CLI::App& app, bool with_head) {
     app.add_option("--pitch", pitch_deg, "head pitch (deg, down positive; the NAO's range)")
         ->capture_default_str()->check(finite_range(R::kMinPitchDeg, R::kMaxPitchDeg, "deg (the NAO's HeadPitch range)"));
   }
+  std::vector<CLI::Option*> all = app.get_options();  // in the order they were added
+  return {all.begin() + static_cast<std::ptrdiff_t>(before), all.end()};
 }
 
 hal::CameraIntrinsics CameraOptions::intrinsics() const {

@@ -82,8 +82,8 @@ struct CameraOptions {
   double body_pitch_deg = 0.0;  // the torso's tilt (hal::BodyTilt): forward positive
   double body_roll_deg = 0.0;   // leaning right positive
 
-  /// With the head: --yaw, --pitch, --body-pitch and --body-roll too.
-  void add_to(CLI::App& app, bool with_head = true);
+  /// With the head: --yaw, --pitch, --body-pitch and --body-roll too. Returns the options added.
+  std::vector<CLI::Option*> add_to(CLI::App& app, bool with_head = true);
   [[nodiscard]] hal::CameraIntrinsics intrinsics() const;
   [[nodiscard]] hal::HeadJoints head() const;
   [[nodiscard]] hal::BodyTilt body() const;

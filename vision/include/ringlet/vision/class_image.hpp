@@ -82,14 +82,14 @@ class ClassImage {
   return 0;
 }
 
-/// Pixel (x, y) of a frame in YUV (no bounds check): YUYV pairs share their U and V, BGR8 goes
-/// through bgr_to_yuv, Gray8 has U = V = 128.
+/// Pixel (x, y) of a frame in YUV (no bounds check): YUYV pairs share their U and V (the last
+/// pixel of an odd width has no V: 128), BGR8 goes through bgr_to_yuv, Gray8 has U = V = 128.
 [[nodiscard]] inline Yuv yuv_at(const hal::FrameView& f, int x, int y) noexcept {
   const std::uint8_t* row = f.data + static_cast<std::size_t>(y) * static_cast<std::size_t>(f.stride);
   switch (f.format) {
     case hal::PixelFormat::kYuyv: {
       const std::uint8_t* pair = row + 4 * (static_cast<std::size_t>(x) / 2);
-      return {yuyv_luma(row, x), pair[1], pair[3]};
+      return {yuyv_luma(row, x), pair[1], (x | 1) < f.width ? pair[3] : std::uint8_t{128}};
     }
     case hal::PixelFormat::kBgr8: {
       const std::uint8_t* p = row + 3 * static_cast<std::size_t>(x);

@@ -163,6 +163,14 @@ class RansacLineFinder {
     const hal::RobotPoint& u = scratch_.along_[static_cast<std::size_t>(p)];
     return u.x != 0.0 || u.y != 0.0;
   }
+  /// Over `members` whose paint's direction is known and `direction(point)` gives a unit ground
+  /// direction: the squares of the tangent of the angle, in the picture, between the two, summed.
+  struct SquaredOffsets {
+    double sum = 0.0;
+    std::size_t n = 0;
+  };
+  template <class Direction>
+  [[nodiscard]] SquaredOffsets squared_offsets(std::span<const int> members, const Direction& direction) const noexcept;
   /// RMS over `members` (those whose paint's direction is known; none: infinity) of the tangent
   /// of the angle, in the picture, between their paint and the ground direction (dx, dy).
   [[nodiscard]] double paint_rms(double dx, double dy, std::span<const int> members) const noexcept;
