@@ -111,8 +111,11 @@ constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0x2b3a1ae0c646d27a
 // the centre circle's work has its own cost row (a faster stage): both SPL hashes changed.
 // Then the scan's edge test counts the saturation the paint has less than the carpet too (sunlit
 // carpet near white): other candidates reach RANSAC, and both SPL hashes changed.
-constexpr Golden kSplField{"spl_field.toml (4 s)", 0xd19ba29445b07063ULL, 0x7434d80351b86734ULL};
-constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x7638c95f962a46a4ULL, 0x58466e22d270af31ULL};
+// Then RANSAC draws a trial's second point along the first one's paint, splits lines at gaps of
+// 0.8 m (was 0.5), and the line check and the centre circle changed (issue 10): vision reports
+// other lines, the localization reads them, and both SPL hashes changed with their trajectories.
+constexpr Golden kSplField{"spl_field.toml (4 s)", 0x9cdde794608cd7cbULL, 0x5d2e0aaeab30326eULL};
+constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0xf35d76991d3925c9ULL, 0x13da9c79f27750cbULL};
 
 // The hybrid controller (planner + arbiter under Navigate): the courtyard's whole mission, and the
 // first 30 s of P&B's test world (the dead end found and planned around) and of the woods.

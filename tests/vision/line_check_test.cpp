@@ -142,5 +142,24 @@ TEST(LineCheck, OffOrOutOfThePictureIsNotJudged) {
   EXPECT_DOUBLE_EQ(share(one_line(), {-2.0, -0.5}, {-2.0, 0.5}), 1.0);
 }
 
+
+// A near line along the bottom of the picture: the picture's edge cuts its band, which has field
+// on its far side only. The edge says nothing against paint: before, such a band was "no field
+// beyond it" and failed.
+TEST(LineCheck, ABandTheEdgeOfThePictureCutsIsPaint) {
+  const Camera cam;
+  const auto bottom = hal::pixel_to_ground(cam.k, cam.pose(), {320.0, 480.0});
+  ASSERT_TRUE(bottom.has_value());
+  // The centre line 1.5 cm beyond the bottom row's ground: a band 5 cm wide is cut a centimetre
+  // short of its near edge.
+  const double x = bottom->x + 0.015;
+  testing::Scene scene;
+  scene.lines = {{{x, -2.0}, {x, 2.0}}};
+  EXPECT_GE(share(scene, {x, -0.3}, {x, 0.3}), 0.9);
+  // Clear of the edge, the same line passes as before; green beyond a band is still needed.
+  scene.lines = {{{x + 0.3, -2.0}, {x + 0.3, 2.0}}};
+  EXPECT_DOUBLE_EQ(share(scene, {x + 0.3, -0.3}, {x + 0.3, 0.3}), 1.0);
+}
+
 }  // namespace
 }  // namespace ringlet::vision

@@ -197,8 +197,13 @@ CentreCircle CentreCircleFinder::judge(const Circle2& circle, std::span<const ha
 }
 
 CentreCircleFinder::CentreCircleFinder(const CircleParams& params, std::size_t capacity)
-    : params_(params), arc_(capacity) {
+    : params_(params),
+      max_direction_tan_(params.max_direction_deg > 0.0 ? std::tan(params.max_direction_deg * std::numbers::pi / 180.0)
+                                                         : -1.0),
+      arc_(capacity) {
   points_.reserve(capacity);
+  along_.reserve(capacity);
+  across_.reserve(capacity);
   sample_.reserve(capacity);
   eligible_.reserve(capacity);
   members_.reserve(capacity);
@@ -210,9 +215,13 @@ std::size_t CentreCircleFinder::gather(const Circle2& c, double band) noexcept {
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const DistanceRange::Verdict v = ring.of(squared_distance(points_[i], c.centre));
     if (v == DistanceRange::Verdict::kOut) continue;
-    if (v == DistanceRange::Verdict::kIn || std::abs(distance(points_[i], c.centre) - c.radius) <= band) {
-      members_.push_back(static_cast<int>(i));
+    if (v != DistanceRange::Verdict::kIn && std::abs(distance(points_[i], c.centre) - c.radius) > band) continue;
+    if (max_direction_tan_ >= 0.0 && knows_paint_direction(along_[i])) {
+      // The tangent there: at right angles to the radius.
+      const PaintOffset o = paint_offset(along_[i], across_[i], c.centre.y - points_[i].y, points_[i].x - c.centre.x);
+      if (o.off > max_direction_tan_ * o.on) continue;
     }
+    members_.push_back(static_cast<int>(i));
   }
   return members_.size();
 }
@@ -222,8 +231,12 @@ CentreCircle CentreCircleFinder::find(std::span<const CandidatePoint> candidates
                                       int max_trials) noexcept {
   stats = CircleStats{};
   points_.clear();
+  along_.clear();
+  across_.clear();
   for (std::size_t i = 0; i < candidates.size() && points_.size() < points_.capacity(); ++i) {
     points_.push_back(candidates[i].ground);
+    along_.push_back(candidates[i].ground_along);
+    across_.push_back(candidates[i].ground_across);
   }
   const auto min_inliers = static_cast<std::size_t>(std::max(params_.min_inliers, 3));
   if (points_.size() < min_inliers) return {};

@@ -8,6 +8,10 @@
 
 namespace ringlet::vision {
 
+bool LineCheck::outside(double x, double y) const noexcept {
+  return x < 0.0 || y < 0.0 || x >= static_cast<double>(classes_.width()) || y >= static_cast<double>(classes_.height());
+}
+
 bool LineCheck::looks_like_line(double cx, double cy, double nx, double ny, double h) const noexcept {
   // The paint: a line pixel within half the band plus the slack of the fit.
   const int reach = static_cast<int>(std::ceil(h + params_.centre_slack_px));
@@ -36,6 +40,10 @@ bool LineCheck::looks_like_line(double cx, double cy, double nx, double ny, doub
     if (steps > band) return false;  // too wide for paint: a robot, a post, a white wall
     bool field = false;
     for (int e = 0; e <= params_.edge_px; ++e, d += sign) {
+      if (outside(cx + d * nx, cy + d * ny)) {  // the picture's edge cut the band: nothing to say
+        field = true;
+        break;
+      }
       const ColourClass c = classes_.class_near(cx + d * nx, cy + d * ny);
       if (c == ColourClass::kField) {
         field = true;

@@ -218,7 +218,9 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     r.line_count = lines.count;
     r.circle = lines.circle;
     r.ransac = lines.stats;
-    r.work.point_tests += static_cast<std::int64_t>(lines.stats.trials_run) * lines.stats.points_used;
+    // Each trial tests its sample's points, after drawing its second point (a draw tests one).
+    r.work.point_tests +=
+        static_cast<std::int64_t>(lines.stats.trials_run) * lines.stats.points_used + lines.stats.partner_draws;
     r.cut.trials_skipped = lines.stats.trials_skipped;
     r.cut.lines_not_extracted = lines.stats.stopped_early;
     r.cut.points_left = lines.stats.points_left;

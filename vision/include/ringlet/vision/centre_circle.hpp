@@ -49,6 +49,11 @@ struct CircleParams {
   double min_pair_distance_m = 0.15;     // closer pairs fix the centre poorly
   double hypothesis_band_m = 0.06;       // a sample point supports a hypothesis this close to it
   double band_m = 0.04;                  // inlier band of the refined circle (the lines' tolerance)
+  double max_direction_deg = 30.0;       // a point whose paint runs more than this off the circle's
+                                         //   tangent in the picture (its run's edges tell) is no
+                                         //   inlier: a line crossing the band at the end of a
+                                         //   straight one bent the pair into a false arc
+                                         //   (val2_s101 frame 1665); 0: off
   int min_inliers = 12;
   double min_coverage_deg = 50.0;        // curved arc needed, in 10° bins of ≥ 2 points
   double tangent_rms_ratio = 0.6;        // judged on its points' tangents (a far circle): a
@@ -132,6 +137,9 @@ class CentreCircleFinder {
 
   CircleParams params_;
   std::vector<hal::RobotPoint> points_;
+  std::vector<hal::RobotPoint> along_;   // their paint's direction (CandidatePoint::ground_along
+  std::vector<hal::RobotPoint> across_;  //   and ground_across)
+  double max_direction_tan_;             // tan(max_direction_deg), < 0: no gate
   std::vector<int> sample_;
   std::vector<int> eligible_;  // one trial's candidates for its second point
   std::vector<int> members_;

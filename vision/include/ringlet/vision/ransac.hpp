@@ -22,9 +22,14 @@
 namespace ringlet::vision {
 
 inline constexpr std::size_t kMaxLines = 12;
+inline constexpr int kPartnerDraws = 8;  // draws for a trial's second point along the first's paint
 
 struct RansacParams {
-  int max_trials = 30;               // MAX_TRIALS: two-point hypotheses per extracted line
+  int max_trials = 30;               // MAX_TRIALS: two-point hypotheses per extracted line; the
+                                     //   second point is drawn among those lying along the first
+                                     //   one's paint whose own paint runs that way (when its
+                                     //   direction is known), so a short line is drawn about as
+                                     //   often as a long one (as 100 blind trials, validation)
   int skip = 10;                     // RANSAC_SKIP: hypotheses are drawn from, and scored on, every
                                      //   skip-th point still unassigned; the chosen line is then
                                      //   refitted, cut and measured on every candidate point
@@ -43,9 +48,12 @@ struct RansacParams {
                                      //   length / scan stride): a painted line yields a candidate
                                      //   on most of them; clutter lined up by chance, on few
   double thin_width_px = 4.0;         // a piece whose paint is narrower than this in the picture
-  double thin_min_support = 0.3;     //   needs only this support: a far line's run is often missed
+  double thin_min_support = 0.2;     //   needs only this support: a far line's run is often missed
                                      //   (too faint, or broken into dashes), yet lines up exactly
-  double split_gap_m = 0.5;          // a gap longer than this between consecutive inliers splits
+  double split_gap_m = 0.8;          // a gap longer than this between consecutive inliers splits
+                                     //   (0.5 broke far lines, whose candidates come in stretches,
+                                     //   into pieces judged alone: validation F1 −0.01, 1.0 merged
+                                     //   what is not one line: −0.015)
   int max_split_depth = 3;           // a piece rejected as too sparse or as no paint is split at
                                      //   its widest gap and its parts judged alone, this many times
                                      //   deep (≤ 2^depth parts): lines past legs, into white feet
@@ -87,6 +95,7 @@ struct RansacStats {
   int sparse_rejected = 0;       // pieces with too little support for their image length
   int check_rejected = 0;        // pieces the picture does not show as paint (LineCheck)
   int trials_run = 0;
+  int partner_draws = 0;         // second points drawn (up to kPartnerDraws per trial: along the first's paint)
   int trials_skipped = 0;        // cut by the deadline
   int lines_extracted = 0;       // extraction rounds that produced a segment (before merging)
   int arcs_rejected = 0;         // pieces taken as (part of) the centre circle, not reported as lines
@@ -160,8 +169,7 @@ class RansacLineFinder {
     return std::abs(l.signed_distance(q)) <= tolerance(q);
   }
   [[nodiscard]] bool has_direction(int p) const noexcept {
-    const hal::RobotPoint& u = scratch_.along_[static_cast<std::size_t>(p)];
-    return u.x != 0.0 || u.y != 0.0;
+    return knows_paint_direction(scratch_.along_[static_cast<std::size_t>(p)]);
   }
   /// Over `members` whose paint's direction is known and `direction(point)` gives a unit ground
   /// direction: the squares of the tangent of the angle, in the picture, between the two, summed.
@@ -177,20 +185,18 @@ class RansacLineFinder {
   /// RMS over `members` of the tangent of the angle, in the picture, between their paint and
   /// the circle's tangent.
   [[nodiscard]] double tangent_rms(const CentreCircle& c, std::span<const int> members) const noexcept;
-  /// A ground direction h = α·along + β·across runs at atan|β/α| = atan(off / on) to point p's
-  /// paint in the picture: off = |along × h|, on = |h × across|.
-  struct PaintOffset {
-    double off = 0.0, on = 0.0;
-  };
   [[nodiscard]] PaintOffset paint_offset(double hx, double hy, int p) const noexcept {
-    const hal::RobotPoint& u = scratch_.along_[static_cast<std::size_t>(p)];
-    const hal::RobotPoint& v = scratch_.across_[static_cast<std::size_t>(p)];
-    return {std::abs(u.x * hy - u.y * hx), std::abs(hx * v.y - hy * v.x)};
+    return vision::paint_offset(scratch_.along_[static_cast<std::size_t>(p)], scratch_.across_[static_cast<std::size_t>(p)],
+                                hx, hy);
   }
   /// Point p's paint runs within atan(max_tan) of l in the picture (or its direction is unknown).
   [[nodiscard]] bool along_paint(const Line2& l, int p, double max_tan) const noexcept {
+    return along_paint(l.dx, l.dy, p, max_tan);
+  }
+  /// The same for the ground direction (hx, hy), of any length.
+  [[nodiscard]] bool along_paint(double hx, double hy, int p, double max_tan) const noexcept {
     if (max_tan < 0.0 || !has_direction(p)) return true;
-    const PaintOffset o = paint_offset(l.dx, l.dy, p);
+    const PaintOffset o = paint_offset(hx, hy, p);
     return o.off <= max_tan * o.on;
   }
   /// The arc test of one piece; true (and the circle updated) when it is part of the circle.

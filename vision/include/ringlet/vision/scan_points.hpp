@@ -2,6 +2,7 @@
 // Line candidate points from scan lines: green → white → green runs along vertical scan lines
 // every `stride` columns (and horizontal ones every `stride` rows, for lines seen end-on), below
 // the horizon, checked by luminance edges and by the width a 5 cm line has at that distance.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -46,6 +47,21 @@ struct CandidatePoint {
   hal::RobotPoint ground_along{};
   hal::RobotPoint ground_across{};
 };
+
+/// How a ground direction h runs against a candidate's paint in the picture: h = α·along + β·across
+/// (CandidatePoint::ground_along, ground_across) runs at atan|β/α| = atan(off / on) to it, where
+/// off = |along × h| and on = |h × across|.
+struct PaintOffset {
+  double off = 0.0, on = 0.0;
+};
+[[nodiscard]] inline PaintOffset paint_offset(const hal::RobotPoint& along, const hal::RobotPoint& across, double hx,
+                                              double hy) noexcept {
+  return {std::abs(along.x * hy - along.y * hx), std::abs(hx * across.y - hy * across.x)};
+}
+/// Whether the run's edges gave the paint's direction (ground_along is {0, 0} when not).
+[[nodiscard]] inline bool knows_paint_direction(const hal::RobotPoint& along) noexcept {
+  return along.x != 0.0 || along.y != 0.0;
+}
 
 /// A fixed-capacity list of candidates: storage allocated at construction, push refuses (and
 /// counts) points beyond the capacity.
