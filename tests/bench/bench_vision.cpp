@@ -162,6 +162,7 @@ void BM_Ransac(benchmark::State& state) {
   }
   state.counters["lines"] = static_cast<double>(out.count);
   state.counters["trials"] = out.stats.trials_run;
+  state.counters["draws"] = out.stats.partner_draws;  // second points drawn along the first's paint
 }
 BENCHMARK(BM_Ransac)->Unit(benchmark::kMicrosecond);
 

@@ -28,6 +28,11 @@ CostModel default_cost_model() noexcept {
   // modelled the stage below its measured time (139 us against 185 us on the ball's footing), and
   // that relation is kept, scaled by the stage's measured speed-up (against BM_Ball in the same
   // run: 3.58 -> 1.9-2.1 times its time, ×0.56): 4 × 10 ns × 0.56 over the 3 walks it makes now.
+  // RANSAC draws a trial's second point along the first one's paint (up to 8 draws); each draw is
+  // counted as a point test. In BM_Ransac (same run, BM_Ball 59-60 us) one draw a trial took
+  // 92.7 us; up to 8, 114 us, but the frame then gave 3 lines in 120 trials (2 in 90 before) and
+  // 312 draws (90): most of the time went to the extra round, whose trials are counted as before;
+  // the draws are counted as point tests.
   CostModel m;
   m.fixed_ns = 10'000.0;
   m.per_classified_pixel_ns = 0.63;

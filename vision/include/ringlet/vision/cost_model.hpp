@@ -20,7 +20,8 @@ struct WorkCount {
   std::int64_t ball_samples = 0;       // class-image samples the ball detector looked at
   std::int64_t scanned_pixels = 0;     // pixels walked by the scan lines (vertical + horizontal)
   std::int64_t candidates = 0;         // scan points offered to RANSAC
-  std::int64_t point_tests = 0;        // RANSAC trials × points each trial tested, and the field marks'
+  std::int64_t point_tests = 0;        // RANSAC trials × points each trial tested, plus the draws of
+                                       // their second points; and the field marks'
   // Appended (issue 10), so that older brace-initialised counts keep their meaning:
   std::int64_t colour_samples = 0;     // pixels the adaptive field-colour estimate sampled
   std::int64_t colour_rebuilds = 0;    // adaptive classification tables rebuilt (0 or 1 per frame)
