@@ -114,8 +114,10 @@ constexpr Golden kCourtyard{"courtyard.toml (whole mission)", 0x2b3a1ae0c646d27a
 // Then RANSAC draws a trial's second point along the first one's paint, splits lines at gaps of
 // 0.8 m (was 0.5), and the line check and the centre circle changed (issue 10): vision reports
 // other lines, the localization reads them, and both SPL hashes changed with their trajectories.
+// Then a circle seen over 100° (was 120°) may lie a little farther from its points: the policies
+// run's hashes changed, kSplField's did not (not traced frame by frame).
 constexpr Golden kSplField{"spl_field.toml (4 s)", 0x9cdde794608cd7cbULL, 0x5d2e0aaeab30326eULL};
-constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0xf35d76991d3925c9ULL, 0x13da9c79f27750cbULL};
+constexpr Golden kSplPolicies{"spl_field.toml, degrade and skip acting (4 s)", 0x831bef1b040d6605ULL, 0x4238b9150d0b491aULL};
 
 // The hybrid controller (planner + arbiter under Navigate): the courtyard's whole mission, and the
 // first 30 s of P&B's test world (the dead end found and planned around) and of the woods.

@@ -65,9 +65,12 @@ struct CircleParams {
                                          //   corner touch a circle in two places)
   double free_radius_coverage_deg = 120.0;  // below this much arc the radius is held at r0
   double max_rms_ratio = 0.3;            // the inliers hug the circle: RMS ≤ this × band_m, or
-  double wide_arc_deg = 120.0;           //   with at least this much arc seen,
+  double wide_arc_deg = 100.0;           //   with at least this much arc seen,
   double wide_arc_rms_ratio = 0.45;      //   RMS ≤ this × band_m. Straight lines crossing the band
-                                         //   spread over it (RMS ≈ band / √3 ≈ 0.58 band)
+                                         //   spread over it (RMS ≈ band / √3 ≈ 0.58 band). 120°
+                                         //   refused a circle 5 m away seen over 100°, 60° of it
+                                         //   curved and none straight: its points lie 14 mm from
+                                         //   it (RMS), a pixel's depth there (val_s101 frame 1102)
   double noise_floor_m = 0.005;          // fit_bend's noise floor
   std::uint64_t seed_salt = 0xC1C1E;     // the circle's PRNG stream: SplitMix64::for_frame(seed ^ salt)
 };
