@@ -198,8 +198,7 @@ CentreCircle CentreCircleFinder::judge(const Circle2& circle, std::span<const ha
 
 CentreCircleFinder::CentreCircleFinder(const CircleParams& params, std::size_t capacity)
     : params_(params),
-      max_direction_tan_(params.max_direction_deg > 0.0 ? std::tan(params.max_direction_deg * std::numbers::pi / 180.0)
-                                                         : -1.0),
+      max_direction_tan_(direction_gate_tan(params.max_direction_deg)),
       arc_(capacity) {
   points_.reserve(capacity);
   along_.reserve(capacity);
@@ -216,11 +215,9 @@ std::size_t CentreCircleFinder::gather(const Circle2& c, double band) noexcept {
     const DistanceRange::Verdict v = ring.of(squared_distance(points_[i], c.centre));
     if (v == DistanceRange::Verdict::kOut) continue;
     if (v != DistanceRange::Verdict::kIn && std::abs(distance(points_[i], c.centre) - c.radius) > band) continue;
-    if (max_direction_tan_ >= 0.0 && knows_paint_direction(along_[i])) {
-      // The tangent there: at right angles to the radius.
-      const PaintOffset o = paint_offset(along_[i], across_[i], c.centre.y - points_[i].y, points_[i].x - c.centre.x);
-      if (o.off > max_direction_tan_ * o.on) continue;
-    }
+    // The tangent there: at right angles to the radius.
+    const double tx = c.centre.y - points_[i].y, ty = points_[i].x - c.centre.x;
+    if (!paint_runs_along(along_[i], across_[i], tx, ty, max_direction_tan_)) continue;
     members_.push_back(static_cast<int>(i));
   }
   return members_.size();

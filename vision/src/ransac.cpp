@@ -53,7 +53,6 @@ RansacScratch::RansacScratch(std::size_t capacity) : arc_scratch_(capacity) {
 
 double RansacLineFinder::tan_deg(double deg) noexcept { return std::tan(deg * std::numbers::pi / 180.0); }
 
-double RansacLineFinder::direction_tan(double max_deg) noexcept { return max_deg > 0.0 ? tan_deg(max_deg) : -1.0; }
 
 template <class Direction>
 RansacLineFinder::SquaredOffsets RansacLineFinder::squared_offsets(std::span<const int> members,

@@ -26,10 +26,10 @@ inline constexpr int kPartnerDraws = 8;  // draws for a trial's second point alo
 
 struct RansacParams {
   int max_trials = 30;               // MAX_TRIALS: two-point hypotheses per extracted line; the
-                                     //   second point is drawn among those lying along the first
-                                     //   one's paint whose own paint runs that way (when its
-                                     //   direction is known), so a short line is drawn about as
-                                     //   often as a long one (as 100 blind trials, validation)
+                                     //   second point is drawn along the first one's paint (up to
+                                     //   kPartnerDraws draws, ransac.cpp): short lines are
+                                     //   hypothesised far more often (30 trials did what 100
+                                     //   blind ones did on the validation sets)
   int skip = 10;                     // RANSAC_SKIP: hypotheses are drawn from, and scored on, every
                                      //   skip-th point still unassigned; the chosen line is then
                                      //   refitted, cut and measured on every candidate point
@@ -140,7 +140,7 @@ class RansacLineFinder {
   RansacLineFinder(const RansacParams& params, std::size_t capacity)
       : params_(params),
         scratch_(capacity),
-        max_direction_tan_(direction_tan(params.max_direction_deg)),
+        max_direction_tan_(direction_gate_tan(params.max_direction_deg)),
         max_tangent_rms_tan_(tan_deg(params.tangent_max_rms_deg)) {}
 
   /// Fits lines to `candidates` for frame `frame` (the PRNG stream). `max_trials`, `max_lines`
@@ -163,7 +163,6 @@ class RansacLineFinder {
                                        : params_.inlier_base_m + params_.inlier_per_m * std::sqrt(p.x * p.x + p.y * p.y);
   }
   [[nodiscard]] static double tan_deg(double deg) noexcept;
-  [[nodiscard]] static double direction_tan(double max_deg) noexcept;  // < 0: no gate
   [[nodiscard]] bool in_band(const Line2& l, int p) const noexcept {
     const hal::RobotPoint& q = scratch_.points_[static_cast<std::size_t>(p)];
     return std::abs(l.signed_distance(q)) <= tolerance(q);
@@ -195,9 +194,8 @@ class RansacLineFinder {
   }
   /// The same for the ground direction (hx, hy), of any length.
   [[nodiscard]] bool along_paint(double hx, double hy, int p, double max_tan) const noexcept {
-    if (max_tan < 0.0 || !has_direction(p)) return true;
-    const PaintOffset o = paint_offset(hx, hy, p);
-    return o.off <= max_tan * o.on;
+    return paint_runs_along(scratch_.along_[static_cast<std::size_t>(p)], scratch_.across_[static_cast<std::size_t>(p)],
+                            hx, hy, max_tan);
   }
   /// The arc test of one piece; true (and the circle updated) when it is part of the circle.
   bool try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept;

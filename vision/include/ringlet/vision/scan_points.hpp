@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
 #include <span>
 #include <vector>
 
@@ -61,6 +62,20 @@ struct PaintOffset {
 /// Whether the run's edges gave the paint's direction (ground_along is {0, 0} when not).
 [[nodiscard]] inline bool knows_paint_direction(const hal::RobotPoint& along) noexcept {
   return along.x != 0.0 || along.y != 0.0;
+}
+/// A direction gate of `max_deg` degrees as paint_runs_along takes it: its tangent, or −1 (no
+/// gate) when max_deg ≤ 0.
+[[nodiscard]] inline double direction_gate_tan(double max_deg) noexcept {
+  return max_deg > 0.0 ? std::tan(max_deg * std::numbers::pi / 180.0) : -1.0;
+}
+/// Whether the ground direction (hx, hy), of any length, runs within the gate `max_tan`
+/// (direction_gate_tan) of a candidate's paint in the picture; true without a gate or where the
+/// paint's direction is not known.
+[[nodiscard]] inline bool paint_runs_along(const hal::RobotPoint& along, const hal::RobotPoint& across, double hx,
+                                           double hy, double max_tan) noexcept {
+  if (max_tan < 0.0 || !knows_paint_direction(along)) return true;
+  const PaintOffset o = paint_offset(along, across, hx, hy);
+  return o.off <= max_tan * o.on;
 }
 
 /// A fixed-capacity list of candidates: storage allocated at construction, push refuses (and
