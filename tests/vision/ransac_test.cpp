@@ -608,12 +608,6 @@ TEST(Ransac, TheLinesOfACornerMakeNoCircle) {
   }
 }
 
-}  // namespace
-}  // namespace ringlet::vision
-
-namespace ringlet::vision {
-namespace {
-
 // A trial's second point is drawn along the first one's paint: a short line among clutter whose
 // paint runs every way is hypothesised far more often. With one round left for it (30 trials, a
 // sample holding 4 of its points among 41), it is found in about two frames of three; with blind
@@ -653,7 +647,6 @@ TEST(Ransac, TheSecondPointAlongTheFirstsPaintFindsAShortLineAmongClutter) {
   EXPECT_GE(guided, 36);
   EXPECT_GE(guided, 3 * blind);
 }
-
 
 // The centre circle's inliers are points whose paint runs along its tangent: an arc of points
 // whose paint runs across it (the ends of lines crossing the band, val2_s101 frame 1665: they

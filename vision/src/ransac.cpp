@@ -53,7 +53,6 @@ RansacScratch::RansacScratch(std::size_t capacity) : arc_scratch_(capacity) {
 
 double RansacLineFinder::tan_deg(double deg) noexcept { return std::tan(deg * std::numbers::pi / 180.0); }
 
-
 template <class Direction>
 RansacLineFinder::SquaredOffsets RansacLineFinder::squared_offsets(std::span<const int> members,
                                                                   const Direction& direction) const noexcept {
@@ -164,7 +163,8 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
       // the sample once in a hundred trials (30 trials find it one time in four); along the
       // paint, about as often for a short line as for a long one. Else the last draw.
       int ib = ia;
-      for (int draw = 0; draw < (has_direction(ia) && max_direction_tan_ >= 0.0 ? kPartnerDraws : 1); ++draw) {
+      const int draws = has_direction(ia) && max_direction_tan_ >= 0.0 ? kPartnerDraws : 1;
+      for (int draw = 0; draw < draws; ++draw) {
         auto j = static_cast<std::size_t>(rng.below(n - 1));
         if (j >= i) ++j;
         ib = s.sample_[j];
