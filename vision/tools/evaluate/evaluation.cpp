@@ -128,6 +128,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
   EvalReport report;
   report.dataset = o.dataset.string();
   report.lut = o.lut.empty() ? "default thresholds" : o.lut.string();
+  report.ransac_seed = o.vision.ransac.seed;
   report.match = o.match;
   report.circle_match = o.circle_match;
   report.mark_match = o.mark_match;

@@ -12,6 +12,7 @@
 // pixels); any shared frame is a ToolError, so a report can only come from unseen frames.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -74,6 +75,7 @@ struct TuningResult {
 struct EvalReport {
   std::string dataset;
   std::string lut;
+  std::uint64_t ransac_seed = 0;
   std::string test_set;                 // FrameSet::describe() of each
   std::string tuning_set;               // empty: no tuning
   std::vector<std::string> excluded_sets;

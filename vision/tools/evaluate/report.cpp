@@ -148,6 +148,7 @@ void print_report(const EvalReport& r, std::ostream& os) {
     os << "Hough untuned (defaults), both detectors reported on the " << r.report_frames << " test frames\n";
   }
   os << "colour table: " << r.lut << "\n";
+  os << "RANSAC seed:  " << r.ransac_seed << "\n";
   os << "Hough parameters: " << r.hough.describe() << "\n";
   os << "matching: angle <= " << r.match.max_angle_deg << " deg, endpoints <= " << r.match.max_distance_px
      << " px + half line width, recall needs coverage >= " << r.match.min_coverage << ", truths shorter than "
@@ -256,6 +257,7 @@ nlohmann::json report_json(const EvalReport& r) {
   }
   return {{"dataset", r.dataset},
           {"colour_table", r.lut},
+          {"ransac_seed", r.ransac_seed},
           {"test_set", r.test_set},
           {"tuning_set", r.tuning_set},
           {"excluded_sets", r.excluded_sets},

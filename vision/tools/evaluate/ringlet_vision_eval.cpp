@@ -84,6 +84,10 @@ int main(int argc, char** argv) {
                                              "vision/models/ball.hog; default: none, candidates unverified)");
   app.add_option("--robot-model", robot_model, "HOG/SVM model verifying robot candidates (e.g. "
                                                "vision/models/robot.hog; default: none, candidates unverified)");
+  app.add_option("--seed", o.vision.ransac.seed, "RANSAC seed (each frame's stream is derived from it): the spread of "
+                                                "the line figures over a few seeds shows how much of a difference is "
+                                                "chance")
+      ->capture_default_str();
   app.add_option("--json", json, "write the full report (per-frame times, tuning) as JSON");
   app.add_option("--svg", svg, "write a comparison chart (SVG)");
   app.add_flag("-q,--quiet", quiet, "no progress output");
