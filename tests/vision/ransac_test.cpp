@@ -366,6 +366,42 @@ TEST(Ransac, ImageEndpointsAreTheProjectedGroundEndpoints) {
   EXPECT_NEAR(std::abs(f.ground_end.y - f.ground_start.y), 1.0, 0.02) << "the whole segment, from every candidate";
 }
 
+// A far circle mostly outside the picture shows a few pixels of arc at its edge, as straight as a
+// line's end there: a piece the edge cuts must be min_cut_piece_px long in the picture, unless the
+// frame's circle is known (its pieces never reach the line rounds then). Camera 0.5 m up, level:
+// ground (4, y) is at u = cx − fx·y/4.
+TEST(Ransac, AShortPieceThePicturesEdgeCutsIsNotReportedUnlessTheCircleIsKnown) {
+  const auto pose = hal::CameraPose::from_head({0.5, 0.0, 0.0}, {0.0, 0.0});
+  const double y_edge = (kK.cx - 1.0) * 4.0 / kK.fx;  // u = 1: at the left edge
+  const auto find = [&](double y0, double y1, const CentreCircle* circle, RansacParams params = {}) {
+    SplitMix64 rng(3);
+    std::vector<CandidatePoint> pts;
+    add_line(pts, {4.0, y0}, {4.0, y1}, 60, rng, 0.0);
+    RansacLineFinder finder(params, 4096);
+    LineSet out;
+    finder.find(pts, 1, kK, pose, {}, out, -1, -1, -1, 3, circle);
+    return out;
+  };
+  // 0.16 m at 4 m: about 24 px, cut by the edge.
+  const LineSet cut = find(y_edge - 0.16, y_edge, nullptr);
+  EXPECT_EQ(cut.count, 0U) << describe(cut);
+  EXPECT_EQ(cut.stats.cut_short, 1);
+  RansacParams no_rule;
+  no_rule.min_cut_piece_px = 0.0;
+  EXPECT_EQ(find(y_edge - 0.16, y_edge, nullptr, no_rule).count, 1U) << "the rule, not another test, drops it";
+  // The same piece inside the picture: its ends show, it is a line.
+  const LineSet inside = find(-0.08, 0.08, nullptr);
+  ASSERT_EQ(inside.count, 1U);
+  EXPECT_LT(std::hypot(inside.lines[0].image_end.u - inside.lines[0].image_start.u,
+                       inside.lines[0].image_end.v - inside.lines[0].image_start.v),
+            RansacParams{}.min_cut_piece_px);
+  // Long enough to show it is straight: a line leaving the picture.
+  EXPECT_EQ(find(y_edge - 0.6, y_edge, nullptr).count, 1U);
+  // The frame's circle known (elsewhere): what the edge cuts short is a line's end.
+  const CentreCircle known{.seen = true, .centre = {3.0, -1.0}, .radius_m = 0.75};
+  EXPECT_EQ(find(y_edge - 0.16, y_edge, &known).count, 1U);
+}
+
 // Pieces of the centre circle seen partially, near and far, in any direction, with noise: never a
 // reported line, with or without the circle stage; the circle itself is found (centre within
 // 10 cm) once 60° or more of it is seen.

@@ -213,6 +213,29 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
   }
   if (st.stopped_early) st.points_left = static_cast<int>(s.pool_.size());
   merge(out, k, pose, check);
+  drop_cut_short(out, k);
+}
+
+void RansacLineFinder::drop_cut_short(LineSet& out, const hal::CameraIntrinsics& k) const noexcept {
+  // A piece of a far circle mostly outside the picture is a few pixels of arc at its edge, too
+  // short to bend visibly; a line leaving the picture looks the same there. With the circle
+  // known its pieces never reach here, so what is cut short then is a line's end.
+  if (out.circle.seen || params_.min_cut_piece_px <= 0.0) return;
+  const auto at_edge = [&](const hal::Pixel& p) {
+    return p.u <= kEdgeMarginPx || p.v <= kEdgeMarginPx || p.u >= k.width - kEdgeMarginPx ||
+           p.v >= k.height - kEdgeMarginPx;
+  };
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < out.count; ++i) {
+    const FieldLine& f = out.lines[i];
+    const bool cut = at_edge(f.image_start) || at_edge(f.image_end);
+    if (cut && norm(f.image_end.u - f.image_start.u, f.image_end.v - f.image_start.v) < params_.min_cut_piece_px) {
+      ++out.stats.cut_short;
+      continue;
+    }
+    out.lines[kept++] = f;
+  }
+  out.count = kept;
 }
 
 bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept {
