@@ -366,6 +366,30 @@ TEST(Ransac, ImageEndpointsAreTheProjectedGroundEndpoints) {
   EXPECT_NEAR(std::abs(f.ground_end.y - f.ground_start.y), 1.0, 0.02) << "the whole segment, from every candidate";
 }
 
+// A piece of the circle reported by an early round (near and straight: a chord) goes once a
+// later round finds the circle from the rest of it.
+TEST(Ransac, APieceReportedBeforeTheRoundsFoundTheCircleGoesOnceItIsFound) {
+  const hal::RobotPoint c{1.5, 0.0};
+  const double r0 = 0.75;
+  SplitMix64 rng(4);
+  std::vector<CandidatePoint> pts;
+  const auto on = [&](double deg) {
+    const double a = deg * std::numbers::pi / 180.0;
+    return hal::RobotPoint{c.x + r0 * std::cos(a), c.y + r0 * std::sin(a)};
+  };
+  add_line(pts, on(160.0), on(190.0), 150, rng, 0.005);  // dense: the first round's line
+  add_arc(pts, c, r0, -70.0 * std::numbers::pi / 180.0, 140.0 * std::numbers::pi / 180.0, 0.015, 0.005, rng);
+  const LineSet out = run(pts, {});
+  ASSERT_TRUE(out.circle.seen) << describe(out);
+  EXPECT_NEAR(out.circle.centre.x, c.x, 0.05);
+  EXPECT_NEAR(out.circle.centre.y, c.y, 0.05);
+  for (std::size_t i = 0; i < out.count; ++i) {
+    const FieldLine& f = out.lines[i];
+    const hal::RobotPoint m{(f.ground_start.x + f.ground_end.x) / 2.0, (f.ground_start.y + f.ground_end.y) / 2.0};
+    EXPECT_GT(std::abs(std::hypot(m.x - c.x, m.y - c.y) - r0), 0.08) << "an arc reported as a line:" << describe(out);
+  }
+}
+
 // A far circle mostly outside the picture shows a few pixels of arc at its edge, as straight as a
 // line's end there: a piece the edge cuts must be min_cut_piece_px long in the picture, unless the
 // frame's circle is known (its pieces never reach the line rounds then). Camera 0.5 m up, level:

@@ -212,14 +212,39 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
     if (st.stopped_early) break;
   }
   if (st.stopped_early) st.points_left = static_cast<int>(s.pool_.size());
+  drop_on_circle(out);
   merge(out, k, pose, check);
   drop_cut_short(out, k);
+}
+
+void RansacLineFinder::drop_on_circle(LineSet& out) const noexcept {
+  // A circle the rounds find themselves comes after the pieces earlier rounds reported; the arcs
+  // among those go now. A piece lies on it when its ends, its middle and its quarter points all
+  // do (the test a piece's points get against a known circle); a line crossing it does not.
+  if (!out.circle.seen) return;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < out.count; ++i) {
+    const FieldLine& f = out.lines[i];
+    bool on = true;
+    for (int q = 0; q <= 4 && on; ++q) {
+      const double t = q / 4.0;
+      const hal::RobotPoint p{f.ground_start.x + t * (f.ground_end.x - f.ground_start.x),
+                              f.ground_start.y + t * (f.ground_end.y - f.ground_start.y)};
+      on = on_circle(out.circle, p, 2.0 * tolerance(p));
+    }
+    if (on) {
+      ++out.stats.arcs_rejected;
+      continue;
+    }
+    out.lines[kept++] = f;
+  }
+  out.count = kept;
 }
 
 void RansacLineFinder::drop_cut_short(LineSet& out, const hal::CameraIntrinsics& k) const noexcept {
   // A piece of a far circle mostly outside the picture is a few pixels of arc at its edge, too
   // short to bend visibly; a line leaving the picture looks the same there. With the circle
-  // known its pieces never reach here, so what is cut short then is a line's end.
+  // known its pieces are gone by now (drop_on_circle), so what is cut short then is a line's end.
   if (out.circle.seen || params_.min_cut_piece_px <= 0.0) return;
   const auto at_edge = [&](const hal::Pixel& p) {
     return p.u <= kEdgeMarginPx || p.v <= kEdgeMarginPx || p.u >= k.width - kEdgeMarginPx ||

@@ -220,6 +220,8 @@ class RansacLineFinder {
   /// Drops the pieces the picture's edge cuts that are shorter than min_cut_piece_px in the
   /// picture (none when the frame's circle is known).
   void drop_cut_short(LineSet& out, const hal::CameraIntrinsics& k) const noexcept;
+  /// Drops the reported pieces that lie on the frame's circle (found by a later round).
+  void drop_on_circle(LineSet& out) const noexcept;
   void remove_from_pool(std::span<const int> members) noexcept;
 
   RansacParams params_;
