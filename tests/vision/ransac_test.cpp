@@ -366,6 +366,55 @@ TEST(Ransac, ImageEndpointsAreTheProjectedGroundEndpoints) {
   EXPECT_NEAR(std::abs(f.ground_end.y - f.ground_start.y), 1.0, 0.02) << "the whole segment, from every candidate";
 }
 
+// A round whose best hypothesis gathers too few inliers (clutter won its sample) does not end
+// the extraction at once: the next round draws again, and a short line the first draws missed is
+// found more often.
+TEST(Ransac, OneEmptyRoundDoesNotEndTheExtraction) {
+  const hal::RobotPoint b0{2.6, 1.0}, b1{3.0, 1.0};
+  SplitMix64 rng(23);
+  std::vector<CandidatePoint> pts;
+  add_line(pts, b0, b1, 14, rng);
+  direct(pts, 14, 1.0, 0.0);
+  for (int i = 0; i < 400; ++i) {
+    add_outliers(pts, 1, rng);
+    const double angle = static_cast<double>(rng.below(360)) * std::numbers::pi / 180.0;
+    direct(pts, 1, std::cos(angle), std::sin(angle));
+  }
+  const auto found_short = [&](int max_empty_rounds) {
+    RansacParams params;
+    params.max_empty_rounds = max_empty_rounds;
+    int found = 0;
+    for (std::uint64_t frame = 1; frame <= 60; ++frame) {
+      const LineSet out = run(pts, params, frame);
+      for (std::size_t i = 0; i < out.count; ++i) found += matches(out.lines[i], b0, b1, 0.05) ? 1 : 0;
+    }
+    return found;
+  };
+  const int first_ends = found_short(1);
+  const int second_ends = found_short(2);
+  std::printf("short line found in %d (the first empty round ends) and %d (the second) of 60 frames\n", first_ends,
+              second_ends);
+  EXPECT_GE(second_ends, first_ends + 10);
+}
+
+// Nothing painted lies farther than 11.8 m from a robot on the field or its border: a piece whose
+// nearer end is farther than max_range_m (13 m) is the floor beyond the carpet, not a line.
+TEST(Ransac, APieceFartherThanAnyPaintIsNoLine) {
+  const auto find = [](double x0, double x1, RansacParams params = {}) {
+    SplitMix64 rng(5);
+    std::vector<CandidatePoint> pts;
+    add_line(pts, {x0, 0.3}, {x1, 0.3}, 120, rng, 0.0);
+    return run(pts, params);
+  };
+  const LineSet far = find(13.5, 15.0);
+  EXPECT_EQ(far.count, 0U) << describe(far);
+  EXPECT_EQ(far.stats.beyond_field, 1);
+  RansacParams no_limit;
+  no_limit.max_range_m = 0.0;
+  EXPECT_EQ(find(13.5, 15.0, no_limit).count, 1U) << "the limit, not another test, drops it";
+  EXPECT_EQ(find(12.5, 14.0).count, 1U) << "its nearer end is on the field";
+}
+
 // A piece of the circle reported by an early round (near and straight: a chord) goes once a
 // later round finds the circle from the rest of it.
 TEST(Ransac, APieceReportedBeforeTheRoundsFoundTheCircleGoesOnceItIsFound) {

@@ -134,6 +134,7 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
   const auto fits = [&](const Line2& l, int p) { return in_band(l, p) && along_paint(l, p, max_direction_tan_); };
 
   int rounds = 0;
+  int empty_rounds = 0;
   while (rounds < rounds_cap && s.pool_.size() >= min_inliers) {
     // RANSAC_SKIP: this round's trials see every skip-th unassigned point only.
     // Never thinner than min_sample_points: once the long lines are out, the short ones left
@@ -196,7 +197,14 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
     };
     // From here on every candidate counts: the fit, the endpoints and the gaps are dense.
     collect(best_line);
-    if (s.inliers_.size() < min_inliers) break;
+    // Too few for a line: this round's draws found none (clutter won the sample: the floor beyond
+    // the carpet, a robot), which says little of the short lines still in the pool. The round
+    // counts and the next one draws again, until max_empty_rounds of them found nothing.
+    if (s.inliers_.size() < min_inliers) {
+      if (++empty_rounds >= params_.max_empty_rounds) break;
+      ++rounds;
+      continue;
+    }
     Line2 line = best_line;
     if (const auto refined = fit_line_tls({s.points_, s.inliers_})) {
       line = *refined;
@@ -215,6 +223,21 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
   drop_on_circle(out);
   merge(out, k, pose, check);
   drop_cut_short(out, k);
+  drop_beyond_field(out);
+}
+
+void RansacLineFinder::drop_beyond_field(LineSet& out) const noexcept {
+  if (params_.max_range_m <= 0.0) return;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < out.count; ++i) {
+    const FieldLine& f = out.lines[i];
+    if (std::min(norm(f.ground_start.x, f.ground_start.y), norm(f.ground_end.x, f.ground_end.y)) > params_.max_range_m) {
+      ++out.stats.beyond_field;
+      continue;
+    }
+    out.lines[kept++] = f;
+  }
+  out.count = kept;
 }
 
 void RansacLineFinder::drop_on_circle(LineSet& out) const noexcept {

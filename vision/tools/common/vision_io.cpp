@@ -241,7 +241,8 @@ nlohmann::json result_json(const VisionResult& r) {
                        {"not_paint", rs.check_rejected},         {"arcs", rs.arcs_rejected},
                        {"circle_points", rs.circle_points},      {"splits", rs.splits},
                        {"merges", rs.merges},                    {"beyond_max_lines", rs.segments_dropped},
-                       {"cut_short_at_the_edge", rs.cut_short},  {"stopped_by_deadline", rs.stopped_early},
+                       {"cut_short_at_the_edge", rs.cut_short},  {"beyond_the_field", rs.beyond_field},
+                       {"stopped_by_deadline", rs.stopped_early},
                        {"on_robots", r.robot_legs_dropped},      {"standing", r.standing_dropped}};
   if (r.circle.seen) {
     out["circle"] = {{"seen", true},
