@@ -50,6 +50,15 @@ void add_outliers(std::vector<CandidatePoint>& pts, int n, SplitMix64& rng) {
   }
 }
 
+/// Outliers as add_outliers, each with its paint running in a random direction.
+void add_directed_outliers(std::vector<CandidatePoint>& pts, int n, SplitMix64& rng) {
+  for (int i = 0; i < n; ++i) {
+    add_outliers(pts, 1, rng);
+    const double angle = static_cast<double>(rng.below(360)) * std::numbers::pi / 180.0;
+    direct(pts, 1, std::cos(angle), std::sin(angle));
+  }
+}
+
 void add_circle(std::vector<CandidatePoint>& pts, hal::RobotPoint c, double r, int n, double from = 0.0,
                 double to = 2.0 * std::numbers::pi) {
   for (int i = 0; i < n; ++i) {
@@ -375,11 +384,7 @@ TEST(Ransac, OneEmptyRoundDoesNotEndTheExtraction) {
   std::vector<CandidatePoint> pts;
   add_line(pts, b0, b1, 14, rng);
   direct(pts, 14, 1.0, 0.0);
-  for (int i = 0; i < 400; ++i) {
-    add_outliers(pts, 1, rng);
-    const double angle = static_cast<double>(rng.below(360)) * std::numbers::pi / 180.0;
-    direct(pts, 1, std::cos(angle), std::sin(angle));
-  }
+  add_directed_outliers(pts, 400, rng);
   const auto found_short = [&](int max_empty_rounds) {
     RansacParams params;
     params.max_empty_rounds = max_empty_rounds;
@@ -730,11 +735,7 @@ TEST(Ransac, TheSecondPointAlongTheFirstsPaintFindsAShortLineAmongClutter) {
     direct(pts, 400, 0.0, 1.0);
     add_line(pts, b0, b1, 30, rng);
     direct(pts, 30, 1.0, 0.0);
-    for (int i = 0; i < 300; ++i) {
-      add_outliers(pts, 1, rng);
-      const double angle = static_cast<double>(rng.below(360)) * std::numbers::pi / 180.0;
-      direct(pts, 1, std::cos(angle), std::sin(angle));
-    }
+    add_directed_outliers(pts, 300, rng);
     if (!directions) {
       for (CandidatePoint& p : pts) p.ground_along = p.ground_across = {};
     }

@@ -35,6 +35,19 @@ bool on_circle(const CentreCircle& c, const hal::RobotPoint& q, double band) noe
   return std::abs(norm(q.x - c.centre.x, q.y - c.centre.y) - c.radius_m) <= band;
 }
 
+// Removes the reported lines `drop` says to, keeping the others in order; how many went.
+template <class Drop>
+int drop_lines(LineSet& out, const Drop& drop) noexcept {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < out.count; ++i) {
+    if (drop(out.lines[i])) continue;
+    out.lines[kept++] = out.lines[i];
+  }
+  const auto dropped = static_cast<int>(out.count - kept);
+  out.count = kept;
+  return dropped;
+}
+
 }  // namespace
 
 RansacScratch::RansacScratch(std::size_t capacity) : arc_scratch_(capacity) {
@@ -228,16 +241,9 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
 
 void RansacLineFinder::drop_beyond_field(LineSet& out) const noexcept {
   if (params_.max_range_m <= 0.0) return;
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < out.count; ++i) {
-    const FieldLine& f = out.lines[i];
-    if (std::min(norm(f.ground_start.x, f.ground_start.y), norm(f.ground_end.x, f.ground_end.y)) > params_.max_range_m) {
-      ++out.stats.beyond_field;
-      continue;
-    }
-    out.lines[kept++] = f;
-  }
-  out.count = kept;
+  out.stats.beyond_field += drop_lines(out, [&](const FieldLine& f) {
+    return std::min(norm(f.ground_start.x, f.ground_start.y), norm(f.ground_end.x, f.ground_end.y)) > params_.max_range_m;
+  });
 }
 
 void RansacLineFinder::drop_on_circle(LineSet& out) const noexcept {
@@ -245,23 +251,15 @@ void RansacLineFinder::drop_on_circle(LineSet& out) const noexcept {
   // among those go now. A piece lies on it when its ends, its middle and its quarter points all
   // do (the test a piece's points get against a known circle); a line crossing it does not.
   if (!out.circle.seen) return;
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < out.count; ++i) {
-    const FieldLine& f = out.lines[i];
-    bool on = true;
-    for (int q = 0; q <= 4 && on; ++q) {
+  out.stats.arcs_rejected += drop_lines(out, [&](const FieldLine& f) {
+    for (int q = 0; q <= 4; ++q) {
       const double t = q / 4.0;
       const hal::RobotPoint p{f.ground_start.x + t * (f.ground_end.x - f.ground_start.x),
                               f.ground_start.y + t * (f.ground_end.y - f.ground_start.y)};
-      on = on_circle(out.circle, p, 2.0 * tolerance(p));
+      if (!on_circle(out.circle, p, 2.0 * tolerance(p))) return false;
     }
-    if (on) {
-      ++out.stats.arcs_rejected;
-      continue;
-    }
-    out.lines[kept++] = f;
-  }
-  out.count = kept;
+    return true;
+  });
 }
 
 void RansacLineFinder::drop_cut_short(LineSet& out, const hal::CameraIntrinsics& k) const noexcept {
@@ -273,17 +271,10 @@ void RansacLineFinder::drop_cut_short(LineSet& out, const hal::CameraIntrinsics&
     return p.u <= kEdgeMarginPx || p.v <= kEdgeMarginPx || p.u >= k.width - kEdgeMarginPx ||
            p.v >= k.height - kEdgeMarginPx;
   };
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < out.count; ++i) {
-    const FieldLine& f = out.lines[i];
-    const bool cut = at_edge(f.image_start) || at_edge(f.image_end);
-    if (cut && norm(f.image_end.u - f.image_start.u, f.image_end.v - f.image_start.v) < params_.min_cut_piece_px) {
-      ++out.stats.cut_short;
-      continue;
-    }
-    out.lines[kept++] = f;
-  }
-  out.count = kept;
+  out.stats.cut_short += drop_lines(out, [&](const FieldLine& f) {
+    return (at_edge(f.image_start) || at_edge(f.image_end)) &&
+           norm(f.image_end.u - f.image_start.u, f.image_end.v - f.image_start.v) < params_.min_cut_piece_px;
+  });
 }
 
 bool RansacLineFinder::try_circle(const Line2& line, std::span<const int> piece, LineSet& out) noexcept {
