@@ -78,7 +78,9 @@ struct RansacParams {
   double tangent_circle_max_m = 1.0; // a straight piece this short may still touch a far circle:
                                      //   the circle r0 to either side is gathered (points whose
                                      //   paint runs along its tangent) and judged
-  double tangent_circle_min_range_m = 2.0;  // ... and this far away (nearer, the bend shows)
+  double tangent_circle_min_range_m = 1.5;  // ... and this far away (nearer, the bend shows; a
+                                            //   0.2 m piece 1.9 m away bent too little: 2.0 let
+                                            //   it through, val_s101 frame 1178; 1.0 cost F1)
   double tangent_max_rms_deg = 9.5;  //   and its points' paint must follow the tangent this
                                      //   closely (RMS): lines of a corner pass only the gate
   double arc_line_direction_ratio = 1.5;  // a piece that bends like an arc of no circle the frame
