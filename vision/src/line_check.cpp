@@ -73,30 +73,15 @@ int LineCheck::judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, 
   const double gx = b.x - a.x, gy = b.y - a.y;
   const double len = std::sqrt(gx * gx + gy * gy);
   const double t = (static_cast<double>(i) + 0.5) / static_cast<double>(n);
-  return judge_at(a.x + t * gx, a.y + t * gy, gx / len, gy / len);
-}
-
-LineCheck::ArcPaint LineCheck::circle_paint(const hal::RobotPoint& centre, double radius, int samples) const noexcept {
-  ArcPaint out;
-  for (int i = 0; i < samples; ++i) {
-    const double a = 2.0 * 3.14159265358979323846 * (static_cast<double>(i) + 0.5) / static_cast<double>(samples);
-    const double ca = std::cos(a), sa = std::sin(a);
-    const int r = judge_at(centre.x + radius * ca, centre.y + radius * sa, -sa, ca);
-    out.judged += r >= 0 ? 1 : 0;
-    out.passed += r > 0 ? 1 : 0;
-  }
-  return out;
-}
-
-int LineCheck::judge_at(double px, double py, double ux, double uy) const noexcept {
+  const double px = a.x + t * gx, py = a.y + t * gy;
   const auto c = hal::project(k_, pose_, {px, py, 0.0});
   if (!c) return -1;
-  const double h = half_width_from(*c, {px, py}, ux, uy);
+  const double h = half_width_from(*c, {px, py}, gx / len, gy / len);
   if (h <= 0.0) return -1;
   if (c->u < 0.0 || c->u >= classes_.width() || c->v < classes_.first_row() || c->v >= classes_.height()) return -1;
   // The normal in the picture: across the projected line, i.e. perpendicular to its image
   // direction (the projected width vector is not perpendicular in a perspective view).
-  const auto c2 = hal::project(k_, pose_, {px + ux * 0.05, py + uy * 0.05, 0.0});
+  const auto c2 = hal::project(k_, pose_, {px + gx / len * 0.05, py + gy / len * 0.05, 0.0});
   if (!c2) return -1;
   double dx = c2->u - c->u, dy = c2->v - c->v;
   const double dl = std::sqrt(dx * dx + dy * dy);

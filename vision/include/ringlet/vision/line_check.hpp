@@ -73,13 +73,6 @@ class LineCheck {
   /// 0 when either does not project.
   [[nodiscard]] double half_width_px(const hal::RobotPoint& at, double dx, double dy) const noexcept;
   [[nodiscard]] Span painted_span(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept;
-  /// Paint along a circle on the ground: of `samples` points spread evenly around it, how many
-  /// fall inside the picture (judged) and how many of those look like paint running along it.
-  struct ArcPaint {
-    int judged = 0;
-    int passed = 0;
-  };
-  [[nodiscard]] ArcPaint circle_paint(const hal::RobotPoint& centre, double radius, int samples) const noexcept;
 
  private:
   // half_width_px with `at` already projected to `c` (judge() has it).
@@ -88,8 +81,6 @@ class LineCheck {
   [[nodiscard]] Verdict assess(const hal::RobotPoint& a, const hal::RobotPoint& b) const noexcept;
   // Sample i of n along [a, b]: 1 looks like paint, 0 does not, -1 not judged (outside the picture).
   [[nodiscard]] int judge(const hal::RobotPoint& a, const hal::RobotPoint& b, int i, int n) const noexcept;
-  // One sample at ground point p of paint running along unit ground direction (ux, uy).
-  [[nodiscard]] int judge_at(double px, double py, double ux, double uy) const noexcept;
   // Beyond the picture's edges (above the horizon is inside: not ground, not "nothing to say").
   [[nodiscard]] bool outside(double x, double y) const noexcept;
   // One sample: image point c of the centre line, unit normal (nx, ny), expected half width h.
