@@ -490,10 +490,6 @@ TEST(FieldColour, AdaptivePipelineFindsTheLinesTheTableMisses) {
   VisionConfig adaptive;
   VisionConfig table;
   table.colour_mode = ColourMode::kTable;
-  // The classes' own effect: the scan's faint runs (paint short of the line colour between green)
-  // rescue some of what the table misses, so they are off in both.
-  adaptive.scan.faint_max_samples = 0;
-  table.scan.faint_max_samples = 0;
   VisionPipeline a(adaptive, ColourTable::from_thresholds({}));
   VisionPipeline t(table, ColourTable::from_thresholds({}));
   const std::size_t with_adaptive = a.process(l.frame.view, cam.head).line_count;

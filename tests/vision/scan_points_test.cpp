@@ -218,49 +218,6 @@ TEST(ScanPoints, PaintOnSunlitCarpetIsFoundByItsChroma) {
   EXPECT_EQ(candidates(0.0), 0U) << "Y alone: 254 − 236 < 24";
 }
 
-// A far line a pixel or two wide blends with the carpet: brighter and paler than it, yet short of
-// the line colour. Such a run of no class between green is tried as paint all the same (its
-// edges and width decide); a dark run is not paint, and a wide one is no far line.
-TEST(ScanPoints, AFaintRunBetweenGreenIsTriedAsPaint) {
-  Camera cam;
-  const auto candidates = [&](double distance, int paint_y, int faint_max_samples, int& widest) {
-    testing::Scene scene;
-    scene.lines = {{{distance, -6.0}, {distance, 6.0}}};
-    testing::Frame f = testing::render(scene, cam, hal::PixelFormat::kYuyv);
-    for (std::size_t i = 0; i + 3 < f.bytes.size(); i += 4) {  // Y0 U Y1 V
-      if (f.bytes[i] <= 150 && f.bytes[i + 2] <= 150) continue;
-      f.bytes[i] = f.bytes[i + 2] = static_cast<std::uint8_t>(paint_y);  // no line colour: Y < 165
-      f.bytes[i + 1] = f.bytes[i + 3] = 128;                            // nor field: U, V > 122
-    }
-    const ColourTable table = ColourTable::from_thresholds({});
-    std::vector<int> rows(640);
-    const int first = horizon_rows(cam.k, cam.pose(), 2, rows);
-    ClassImage classes(640, 480);
-    EXPECT_TRUE(classes.classify(f.view, table, first, 1));
-    widest = 0;  // the paint's run down the middle column
-    for (int v = first, run = 0; v < 480; ++v) {
-      run = classes.at(320, v) == ColourClass::kOther ? run + 1 : 0;
-      widest = std::max(widest, run);
-    }
-    ScanParams params;
-    params.horizontal = false;
-    params.faint_max_samples = faint_max_samples;
-    CandidateBuffer out(4096);
-    LineScanner scanner(640);
-    scanner.scan(classes, f.view, cam.k, cam.pose(), rows, params, out);
-    for (const CandidatePoint& p : out.points()) EXPECT_NEAR(p.ground.x, distance, 0.15);
-    return out.size();
-  };
-  const int faint = ScanParams{}.faint_max_samples;
-  int widest = 0;
-  EXPECT_EQ(candidates(4.0, 150, 0, widest), 0U) << "no sample reaches the line colour";
-  EXPECT_GT(candidates(4.0, 150, faint, widest), 300U);
-  EXPECT_LE(widest, faint);
-  EXPECT_EQ(candidates(4.0, 30, faint, widest), 0U) << "darker than the carpet: no paint";
-  EXPECT_EQ(candidates(1.5, 150, faint, widest), 0U) << "a near line's paint is wider than a faint run";
-  EXPECT_GT(widest, faint);
-}
-
 TEST(ScanPoints, CoarserGridStillFindsTheLine) {
   Camera cam;
   testing::Scene scene;

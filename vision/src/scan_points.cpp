@@ -15,7 +15,7 @@ namespace {
 constexpr int kNever = std::numeric_limits<int>::min() / 2;
 using RunState = LineScanner::RunState;
 
-constexpr RunState kFresh{kNever, 0, 0, false, false, kNever, 0};
+constexpr RunState kFresh{kNever, 0, 0, false, false};
 
 struct Context {
   const hal::FrameView& frame;
@@ -25,8 +25,7 @@ struct Context {
   CandidateBuffer& out;
   ScanStats& stats;
   int step;
-  int gap_limit;    // max distance from green to white and back (max_gap misclassified samples)
-  int faint_limit;  // a faint run spans less than this (faint_max_samples samples); 0: none
+  int gap_limit;  // max distance from green to white and back (max_gap misclassified samples)
 };
 
 // Where a scan line lies: positions run along one axis at a fixed coordinate across it.
@@ -125,7 +124,7 @@ struct PaintDirection {
 }
 
 // A green-white-green run [a, b] was found: check its edges and width, then keep its centre.
-void emit(const Context& ctx, const ScanLine& line, int a, int b, bool faint) noexcept {
+void emit(const Context& ctx, const ScanLine& line, int a, int b) noexcept {
   ++ctx.stats.runs;
   const int s = ctx.step;
   const int before = std::max(a - ctx.params.edge_offset * s, line.begin);
@@ -159,12 +158,6 @@ void emit(const Context& ctx, const ScanLine& line, int a, int b, bool faint) no
   const double metres_per_px = std::max(dist(*g, *g1), 1e-9);
   const double expected = ctx.params.line_width_m / metres_per_px;
   const double slack = ctx.params.width_slack_px + static_cast<double>(s);
-  // A faint run is a far line's whole width: tried only where a line is that thin in the picture
-  // (nearer, it stood on robots' grey limbs and shadows' edges).
-  if (faint && expected > ctx.faint_limit) {
-    ++ctx.stats.rejected_width;
-    return;
-  }
   if (extent > ctx.params.max_width_factor * expected + slack || extent < ctx.params.min_width_factor * expected - slack) {
     ++ctx.stats.rejected_width;
     return;
@@ -173,15 +166,9 @@ void emit(const Context& ctx, const ScanLine& line, int a, int b, bool faint) no
   ctx.out.push({line.pixel(centre), *g, static_cast<float>(extent), line.direction, d.along, d.across});
 }
 
-enum class RunEnd : std::uint8_t { kNone, kPaint, kFaint };
-
-// One sample at position p of class c. Says whether a run [a, b] completed (green after it), and
-// which kind.
-// A faint run (samples of no class between green) completes the same way; white ends it.
-inline RunEnd advance(RunState& st, int p, ColourClass c, int gap_limit, int faint_limit, int step, int& a,
-                    int& b) noexcept {
+// One sample at position p of class c. Returns true when a run [a, b] completed (green after it).
+inline bool advance(RunState& st, int p, ColourClass c, int gap_limit, int& a, int& b) noexcept {
   if (c == ColourClass::kLine) {
-    st.faint_a = kNever;
     if (st.pending && p - st.run_b <= gap_limit) {
       st.in_run = true;  // a few misclassified pixels inside a line: the same run
       st.pending = false;
@@ -191,44 +178,34 @@ inline RunEnd advance(RunState& st, int p, ColourClass c, int gap_limit, int fai
       st.in_run = true;
     }
     st.run_b = p;
-    return RunEnd::kNone;
+    return false;
   }
   if (st.in_run) {
     st.in_run = false;
     st.pending = st.run_a != kNever;
   }
-  RunEnd done = RunEnd::kNone;
+  bool done = false;
   if (c == ColourClass::kField) {
     if (st.pending && p - st.run_b <= gap_limit) {
       a = st.run_a;
       b = st.run_b;
-      done = RunEnd::kPaint;
-    } else if (st.faint_a != kNever && st.faint_b - st.faint_a < faint_limit) {
-      a = st.faint_a;
-      b = st.faint_b;
-      done = RunEnd::kFaint;
+      done = true;
     }
-    st.faint_a = kNever;
     st.pending = false;
     st.last_field = p;
-  } else {
-    if (st.pending && p - st.run_b > gap_limit) st.pending = false;
-    if (!st.in_run && !st.pending) {
-      if (st.faint_a == kNever && p - st.last_field <= step) st.faint_a = p;  // right after green
-      st.faint_b = p;
-    }
+  } else if (st.pending && p - st.run_b > gap_limit) {
+    st.pending = false;
   }
   return done;
 }
 
 // Fast path shared by both directions: a green sample with nothing open only moves last_field.
-inline RunEnd step_sample(RunState& st, int p, ColourClass c, int gap_limit, int faint_limit, int step, int& a,
-                        int& b) noexcept {
-  if (c == ColourClass::kField && !st.in_run && !st.pending && st.faint_a == kNever) {
+inline bool step_sample(RunState& st, int p, ColourClass c, int gap_limit, int& a, int& b) noexcept {
+  if (c == ColourClass::kField && !st.in_run && !st.pending) {
     st.last_field = p;
-    return RunEnd::kNone;
+    return false;
   }
-  return advance(st, p, c, gap_limit, faint_limit, step, a, b);
+  return advance(st, p, c, gap_limit, a, b);
 }
 
 }  // namespace
@@ -244,7 +221,7 @@ ScanStats LineScanner::scan(const ClassImage& classes, const hal::FrameView& fra
   const int s = classes.step();
   const int stride = std::max(s, (std::max(params.stride, 1) + s - 1) / s * s);
   const int top = classes.first_row();
-  const Context ctx{frame, k, pose, params, out, stats, s, (params.max_gap + 1) * s, std::max(params.faint_max_samples, 0) * s};
+  const Context ctx{frame, k, pose, params, out, stats, s, (params.max_gap + 1) * s};
   const int last_row = top + (std::max(h - 1 - top, 0)) / s * s;
   const int last_col = (w - 1) / s * s;
   const auto aligned = [&](int row) { return top + (std::max(row, top) - top + s - 1) / s * s; };
@@ -266,10 +243,9 @@ ScanStats LineScanner::scan(const ClassImage& classes, const hal::FrameView& fra
       const int x = static_cast<int>(i) * stride;
       if (check_start && y < aligned(first_row[static_cast<std::size_t>(x)])) continue;
       int a = 0, b = 0;
-      if (const RunEnd end = step_sample(states_[i], y, static_cast<ColourClass>(row[x]), ctx.gap_limit, ctx.faint_limit, s, a, b);
-          end != RunEnd::kNone) {
+      if (step_sample(states_[i], y, static_cast<ColourClass>(row[x]), ctx.gap_limit, a, b)) {
         const int begin = aligned(first_row[static_cast<std::size_t>(x)]);
-        emit(ctx, ScanLine{ScanDirection::kVertical, x, begin, last_row}, a, b, end == RunEnd::kFaint);
+        emit(ctx, ScanLine{ScanDirection::kVertical, x, begin, last_row}, a, b);
       }
     }
   }
@@ -282,7 +258,7 @@ ScanStats LineScanner::scan(const ClassImage& classes, const hal::FrameView& fra
       const bool check_ground = y < max_first_row;
       RunState st = kFresh;
       for (int x = 0; x < w; x += s) {
-        if (!check_ground && !st.in_run && !st.pending && st.faint_a == kNever && row[x] == static_cast<std::uint8_t>(ColourClass::kField)) {
+        if (!check_ground && !st.in_run && !st.pending && row[x] == static_cast<std::uint8_t>(ColourClass::kField)) {
           // Tight skip over plain green (most of the row): only where it ends matters.
           while (x + s < w && row[x + s] == static_cast<std::uint8_t>(ColourClass::kField)) x += s;
           st.last_field = x;
@@ -292,9 +268,7 @@ ScanStats LineScanner::scan(const ClassImage& classes, const hal::FrameView& fra
         const auto c = check_ground && y < first_row[static_cast<std::size_t>(x)] ? ColourClass::kOther
                                                                                    : static_cast<ColourClass>(row[x]);
         int a = 0, b = 0;
-        if (const RunEnd end = step_sample(st, x, c, ctx.gap_limit, ctx.faint_limit, s, a, b); end != RunEnd::kNone) {
-          emit(ctx, line, a, b, end == RunEnd::kFaint);
-        }
+        if (step_sample(st, x, c, ctx.gap_limit, a, b)) emit(ctx, line, a, b);
       }
     }
   }

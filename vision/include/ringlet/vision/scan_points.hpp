@@ -31,14 +31,6 @@ struct ScanParams {
   double max_width_factor = 3.0;    // runs wider than this × expected are robots / white blobs
   double min_width_factor = 0.3;    // runs narrower than this × expected are noise
   double width_slack_px = 2.0;      // added to both bounds (+ the class step): edge pixels
-  int faint_max_samples = 3;        // a run of up to this many samples of neither field nor line,
-                                    // green on both sides, is also tried as paint where a line is
-                                    // no wider than the run in the picture (its edges and width
-                                    // decide): a far line or the far circle, a pixel or two wide,
-                                    // blends with the carpet and often reaches no line colour.
-                                    // Validation F1 +0.003, +0.001, +0.004, 0.000 on four sets
-                                    // (tried at every range: -0.002 on the set with most robots,
-                                    // their grey limbs); 0: off
   double min_coherence = 0.3;       // the run's edges give the line's direction when their
                                     // gradients agree this well (structure-tensor coherence)
 };
@@ -129,8 +121,6 @@ class LineScanner {
     int run_b;
     bool in_run;
     bool pending;    // a white run that started next to green, waiting for green after it
-    int faint_a;     // a run of samples of no class [faint_a, faint_b] that started next to
-    int faint_b;     //   green (kNever: none open)
   };
 
   explicit LineScanner(int max_width) : states_(static_cast<std::size_t>(max_width > 0 ? max_width : 0)) {}
