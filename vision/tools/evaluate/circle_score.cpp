@@ -25,7 +25,18 @@ CircleCounts& CircleCounts::operator+=(const CircleCounts& o) noexcept {
   recalled += o.recalled;
   centre_error_sum_m += o.centre_error_sum_m;
   radius_error_sum_m += o.radius_error_sum_m;
+  for (std::size_t b = 0; b < kRingDistanceBinsM.size(); ++b) {
+    truths_by_distance[b] += o.truths_by_distance[b];
+    recalled_by_distance[b] += o.recalled_by_distance[b];
+  }
   return *this;
+}
+
+std::size_t ring_distance_bin(const hal::RobotPoint& centre) noexcept {
+  const double d = std::hypot(centre.x, centre.y);
+  std::size_t bin = 0;
+  while (bin + 1 < kRingDistanceBinsM.size() && d >= kRingDistanceBinsM[bin + 1]) ++bin;
+  return bin;
 }
 double CircleCounts::precision() const noexcept {
   return detections == 0 ? 0.0 : static_cast<double>(true_positives) / static_cast<double>(detections);
@@ -47,10 +58,14 @@ double CircleCounts::mean_radius_error_m() const noexcept {
 CircleCounts score_circle(const DetectedCircle& detected, std::span<const TruthRing> rings, const CircleMatchParams& p) {
   CircleCounts c;
   bool matched_expected = false, matched_any = false;
+  std::size_t matched_bin = 0;
   double centre_error = 0.0, radius_error = 0.0;
   for (const TruthRing& ring : rings) {
     const bool expected = ring.visible && ring.visible_fraction * 360.0 >= p.min_visible_deg;
-    if (expected) ++c.truths;
+    if (expected) {
+      ++c.truths;
+      ++c.truths_by_distance[ring_distance_bin(ring.centre)];
+    }
     if (!detected.seen || !ring.visible) continue;
     const double ce = std::hypot(detected.centre.x - ring.centre.x, detected.centre.y - ring.centre.y);
     const double re = std::abs(detected.radius - ring.radius);
@@ -60,10 +75,14 @@ CircleCounts score_circle(const DetectedCircle& detected, std::span<const TruthR
         radius_error = re;
       }
       matched_any = true;
+      if (expected && !matched_expected) matched_bin = ring_distance_bin(ring.centre);
       matched_expected |= expected;
     }
   }
-  if (matched_expected) ++c.recalled;
+  if (matched_expected) {
+    ++c.recalled;
+    ++c.recalled_by_distance[matched_bin];
+  }
   if (detected.seen) {
     // A detection matching only a don't-care ring is left out, as for line segments.
     const bool dont_care = matched_any && !matched_expected;

@@ -13,6 +13,7 @@
 //   (segment_match.hpp's rule, today's tolerances) and lies along the projected ring: five points
 //   spread along it are each within max_distance_px + the ring's projected half width of it.
 //   Such detections were already false positives in the line precision; this counts them apart.
+#include <array>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -42,6 +43,10 @@ struct DetectedCircle {
   double radius = 0.0;
 };
 
+/// Expected rings by the distance of their centre from the robot: bins from these distances (m),
+/// the last one open. Far circles are a pixel or two of paint high: where recall is lost.
+inline constexpr std::array<double, 4> kRingDistanceBinsM{0.0, 3.0, 4.0, 5.0};
+
 struct CircleCounts {
   std::size_t detections = 0;      // scored detections
   std::size_t true_positives = 0;
@@ -49,6 +54,8 @@ struct CircleCounts {
   std::size_t recalled = 0;
   double centre_error_sum_m = 0.0;  // over true positives
   double radius_error_sum_m = 0.0;
+  std::array<std::size_t, kRingDistanceBinsM.size()> truths_by_distance{};  // score_circle only
+  std::array<std::size_t, kRingDistanceBinsM.size()> recalled_by_distance{};
 
   CircleCounts& operator+=(const CircleCounts& o) noexcept;
   [[nodiscard]] double precision() const noexcept;
@@ -57,6 +64,9 @@ struct CircleCounts {
   [[nodiscard]] double mean_centre_error_m() const noexcept;
   [[nodiscard]] double mean_radius_error_m() const noexcept;
 };
+
+/// The kRingDistanceBinsM bin of a ring centred at `centre` (robot frame).
+[[nodiscard]] std::size_t ring_distance_bin(const hal::RobotPoint& centre) noexcept;
 
 /// One frame's detected circle (or none) against its rings.
 [[nodiscard]] CircleCounts score_circle(const DetectedCircle& detected, std::span<const TruthRing> rings,

@@ -257,8 +257,9 @@ EvalReport run_evaluation(const EvalOptions& o) {
     report.ringlet.per_frame.push_back(match_segments(segments, f.meta.lines, o.match));
     report.ringlet.segments.push_back(segments);
     report.ringlet.counts += report.ringlet.per_frame.back();
-    report.circle += score_circle({result.circle.seen, result.circle.centre, result.circle.radius_m}, f.meta.rings,
-                                  o.circle_match);
+    const CircleCounts frame_circle =
+        score_circle({result.circle.seen, result.circle.centre, result.circle.radius_m}, f.meta.rings, o.circle_match);
+    report.circle += frame_circle;
     std::vector<hal::RobotPoint> marks;
     for (std::size_t m = 0; m < result.marks.count; ++m) marks.push_back(result.marks.marks[m].centre);
     report.marks += score_marks(marks, f.meta.marks, o.mark_match);
@@ -303,6 +304,9 @@ EvalReport run_evaluation(const EvalOptions& o) {
       d.per_frame_arcs.push_back(count_arc_false_positives(found, f.meta.lines, rings, o.match));
     };
     count_arcs(report.ringlet, segments);
+    if (report.ringlet.per_frame_arcs.back() > 0 && frame_circle.recalled < frame_circle.truths) {
+      ++report.arc_frames_circle_missed;
+    }
 
     const HoughRun h = run_hough(f, report.hough, margin);
     report.baseline.time_ms.push_back(h.ms);

@@ -92,6 +92,8 @@ struct EvalReport {
   CircleCounts circle{};             // Ringlet's centre circle (Hough reports none)
   CircleCounts marks{};              // Ringlet's penalty and centre marks (mark_score.hpp; no radius)
   std::size_t rings_visible = 0;     // test frames showing any of the ring
+  std::size_t arc_frames_circle_missed = 0;  // Ringlet's frames with arc pieces taken for lines
+                                             //   whose circle was expected and not found
   CircleMatchParams circle_match{};
   MarkMatchParams mark_match{};
   MatchParams match{};

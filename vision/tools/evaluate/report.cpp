@@ -18,6 +18,12 @@ std::string fmt(const char* format, double v) {
   return text;
 }
 
+// "0-3", "3-4", ..., ">=5": a kRingDistanceBinsM bin.
+std::string distance_bin_name(std::size_t b) {
+  if (b + 1 >= kRingDistanceBinsM.size()) return ">=" + fmt("%g", kRingDistanceBinsM[b]);
+  return fmt("%g", kRingDistanceBinsM[b]) + "-" + fmt("%g", kRingDistanceBinsM[b + 1]);
+}
+
 std::string xml_escape(const std::string& text) {
   std::string out;
   for (const char c : text) {
@@ -189,6 +195,7 @@ void print_report(const EvalReport& r, std::ostream& os) {
       std::to_string(r.baseline.arc_false_positives()));
   row("  frames with any", std::to_string(r.ringlet.frames_with_arc_false_positives()),
       std::to_string(r.baseline.frames_with_arc_false_positives()));
+  row("  with the circle missed", std::to_string(r.arc_frames_circle_missed), "-");
   os << "speed ratio (Hough median / Ringlet median): " << fmt("%.2f", r.speed_ratio()) << "x\n";
   os << "cost model on this host (modelled_cost / board factor): median " << fmt("%.3f", percentile(r.model_host_ms, 50.0))
      << " ms; measured / modelled per frame: median " << fmt("%.2f", r.measured_over_modelled(50.0)) << ", p90 "
@@ -209,6 +216,11 @@ void print_report(const EvalReport& r, std::ostream& os) {
   os << "  precision " << fmt("%.3f", c.precision()) << "  recall " << fmt("%.3f", c.recall()) << "  F1 "
      << fmt("%.3f", c.f1()) << "  mean centre error " << fmt("%.3f", c.mean_centre_error_m()) << " m  mean radius error "
      << fmt("%.3f", c.mean_radius_error_m()) << " m\n";
+  os << "  recall by the circle's distance:";
+  for (std::size_t bin = 0; bin < kRingDistanceBinsM.size(); ++bin) {
+    os << "  " << distance_bin_name(bin) << " m " << c.recalled_by_distance[bin] << "/" << c.truths_by_distance[bin];
+  }
+  os << "\n";
   const CircleCounts& m = r.marks;
   os << "\npenalty and centre marks (Ringlet): a match is a centre within " << r.mark_match.max_centre_error_m
      << " m of a cross's; expected when a bar is >= " << r.mark_match.min_bar_px
@@ -243,6 +255,16 @@ nlohmann::json landmark_json(const CircleCounts& c) {
 nlohmann::json report_json(const EvalReport& r) {
   nlohmann::json circle = landmark_json(r.circle);
   circle["frames_showing_some"] = r.rings_visible;
+  circle["frames_with_arc_pieces_circle_missed"] = r.arc_frames_circle_missed;
+  nlohmann::json by_distance = nlohmann::json::array();
+  for (std::size_t b = 0; b < kRingDistanceBinsM.size(); ++b) {
+    nlohmann::json bin = {{"from_m", kRingDistanceBinsM[b]},
+                          {"expected", r.circle.truths_by_distance[b]},
+                          {"recalled", r.circle.recalled_by_distance[b]}};
+    bin["to_m"] = b + 1 < kRingDistanceBinsM.size() ? nlohmann::json(kRingDistanceBinsM[b + 1]) : nlohmann::json(nullptr);
+    by_distance.push_back(bin);
+  }
+  circle["recall_by_distance"] = by_distance;
   circle["mean_radius_error_m"] = r.circle.mean_radius_error_m();
   circle["match"] = {{"max_centre_error_m", r.circle_match.max_centre_error_m},
                      {"max_radius_error_m", r.circle_match.max_radius_error_m},
