@@ -15,13 +15,6 @@ bool upright(const FieldLine& f, double max_slant) noexcept {
   return std::abs(f.image_end.u - f.image_start.u) <= max_slant * std::abs(f.image_end.v - f.image_start.v);
 }
 
-// Drops the pieces `drop` picks from lines[0, count), keeping the order; the new count.
-template <typename Pred>
-std::size_t drop_lines(std::span<FieldLine> lines, std::size_t count, Pred drop) noexcept {
-  const auto end = lines.begin() + static_cast<std::ptrdiff_t>(std::min(count, lines.size()));
-  return static_cast<std::size_t>(std::remove_if(lines.begin(), end, drop) - lines.begin());
-}
-
 }  // namespace
 
 std::size_t drop_robot_legs(std::span<FieldLine> lines, std::size_t count, const RobotList& robots,

@@ -35,17 +35,12 @@ bool on_circle(const CentreCircle& c, const hal::RobotPoint& q, double band) noe
   return std::abs(norm(q.x - c.centre.x, q.y - c.centre.y) - c.radius_m) <= band;
 }
 
-// Removes the reported lines `drop` says to, keeping the others in order; how many went.
+// Removes the reported lines `drop` picks (drop_lines); how many went, for the stats.
 template <class Drop>
-int drop_lines(LineSet& out, const Drop& drop) noexcept {
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < out.count; ++i) {
-    if (drop(out.lines[i])) continue;
-    out.lines[kept++] = out.lines[i];
-  }
-  const auto dropped = static_cast<int>(out.count - kept);
-  out.count = kept;
-  return dropped;
+int drop_reported(LineSet& out, const Drop& drop) noexcept {
+  const std::size_t before = out.count;
+  out.count = drop_lines(out.lines, out.count, drop);
+  return static_cast<int>(before - out.count);
 }
 
 }  // namespace
@@ -241,7 +236,7 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
 
 void RansacLineFinder::drop_beyond_field(LineSet& out) const noexcept {
   if (params_.max_range_m <= 0.0) return;
-  out.stats.beyond_field += drop_lines(out, [&](const FieldLine& f) {
+  out.stats.beyond_field += drop_reported(out, [&](const FieldLine& f) {
     return std::min(norm(f.ground_start.x, f.ground_start.y), norm(f.ground_end.x, f.ground_end.y)) > params_.max_range_m;
   });
 }
@@ -251,7 +246,7 @@ void RansacLineFinder::drop_on_circle(LineSet& out) const noexcept {
   // among those go now. A piece lies on it when its ends, its middle and its quarter points all
   // do (the test a piece's points get against a known circle); a line crossing it does not.
   if (!out.circle.seen) return;
-  out.stats.arcs_rejected += drop_lines(out, [&](const FieldLine& f) {
+  out.stats.arcs_rejected += drop_reported(out, [&](const FieldLine& f) {
     for (int q = 0; q <= 4; ++q) {
       const double t = q / 4.0;
       const hal::RobotPoint p{f.ground_start.x + t * (f.ground_end.x - f.ground_start.x),
@@ -271,7 +266,7 @@ void RansacLineFinder::drop_cut_short(LineSet& out, const hal::CameraIntrinsics&
     return p.u <= kEdgeMarginPx || p.v <= kEdgeMarginPx || p.u >= k.width - kEdgeMarginPx ||
            p.v >= k.height - kEdgeMarginPx;
   };
-  out.stats.cut_short += drop_lines(out, [&](const FieldLine& f) {
+  out.stats.cut_short += drop_reported(out, [&](const FieldLine& f) {
     return (at_edge(f.image_start) || at_edge(f.image_end)) &&
            norm(f.image_end.u - f.image_start.u, f.image_end.v - f.image_start.v) < params_.min_cut_piece_px;
   });

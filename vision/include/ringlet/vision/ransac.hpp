@@ -5,6 +5,7 @@
 // gaps, merged when collinear, and arcs of the centre circle are recognised instead of being
 // reported as short straight lines. All geometry is on the ground (robot frame), where a tolerance
 // in metres means the same thing near and far.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -137,6 +138,15 @@ struct LineSet {
   CentreCircle circle{};
   RansacStats stats{};
 };
+
+/// Removes from lines[0, count) the pieces `drop` picks, keeping the others in order, in place (no
+/// allocation); the new count. RANSAC's reporting rules and the pipeline's filters after it (robot
+/// legs, standing objects) all drop lines this way.
+template <class Drop>
+[[nodiscard]] std::size_t drop_lines(std::span<FieldLine> lines, std::size_t count, const Drop& drop) noexcept {
+  const auto end = lines.begin() + static_cast<std::ptrdiff_t>(std::min(count, lines.size()));
+  return static_cast<std::size_t>(std::remove_if(lines.begin(), end, drop) - lines.begin());
+}
 
 /// Scratch storage for one candidate capacity, allocated once.
 class RansacScratch {
