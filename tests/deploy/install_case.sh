@@ -51,6 +51,14 @@ if [[ $opencv == 1 || $opencv == TRUE || $opencv == ON ]]; then
   [[ -z $rpath ]] || fail "the installed camera module carries an rpath: $rpath"
   if grep -q 'NEEDED.*libopencv' <<<"$(readelf -d "$p/bin/ringlet")"; then fail "bin/ringlet links OpenCV (it must load the module)"; fi
   echo "the camera module is in lib/ringlet, without an rpath; bin/ringlet does not link OpenCV"
+  # ringlet-vision's default models are the installed ones (share/ringlet/vision/models beside
+  # bin/), not the source tree it was built from, which the robot does not have.
+  if [[ -n ${VISION_IMAGE:-} ]]; then
+    json=$("${emulator[@]}" "$p/bin/ringlet-vision" "$VISION_IMAGE" --compact 2>&1) || fail "installed ringlet-vision: $json"
+    want="\"models\":{\"ball\":\"$p/share/ringlet/vision/models/ball.hog\",\"robot\":\"$p/share/ringlet/vision/models/robot.hog\"}"
+    grep -qF "$want" <<<"$json" || fail "installed ringlet-vision does not default to the installed models: $json"
+    echo "installed ringlet-vision verifies with share/ringlet/vision/models by default"
+  fi
 fi
 
 run() { "${emulator[@]}" "$p/bin/ringlet" "$@"; }

@@ -49,8 +49,8 @@ struct Options {
   int repeat = 1;
   bool compact = false;
   std::string ball_mode = "bw";
-  std::string ball_model;
-  std::string robot_model;
+  std::string ball_model = tools::kModelAuto;
+  std::string robot_model = tools::kModelAuto;
 };
 
 /// The picture and the camera that took it: from the image file and the camera flags, or from a
@@ -109,9 +109,18 @@ int run(const Options& o) {
   const cv::Mat& bgr = input.bgr();
 
   config.ball.mode = o.ball_mode == "orange" ? BallMode::kOrange : BallMode::kBlackWhite;
+  // Both models are loaded (and a bad file refused) before anything runs.
+  std::vector<std::string> warnings = input.image.warnings;
+  const tools::ModelFile ball = tools::model_file(o.ball_model, HogTarget::kBall, "--ball-model");
+  const tools::ModelFile robot = tools::model_file(o.robot_model, HogTarget::kRobot, "--robot-model");
   std::vector<HogSvm> models;
-  if (!o.ball_model.empty()) models.push_back(tools::load_hog_model(o.ball_model, HogTarget::kBall, "--ball-model"));
-  if (!o.robot_model.empty()) models.push_back(tools::load_hog_model(o.robot_model, HogTarget::kRobot, "--robot-model"));
+  if (!ball.file.empty()) models.push_back(tools::load_hog_model(ball.file, HogTarget::kBall, "--ball-model"));
+  if (!robot.file.empty()) models.push_back(tools::load_hog_model(robot.file, HogTarget::kRobot, "--robot-model"));
+  for (const tools::ModelFile* m : {&ball, &robot}) {
+    if (m->warning.empty()) continue;
+    std::cerr << "ringlet-vision: warning: " << m->warning << "\n";
+    warnings.push_back(m->warning);
+  }
 
   VisionPipeline pipeline(config, std::move(table));
   for (HogSvm& m : models) {
@@ -143,7 +152,9 @@ int run(const Options& o) {
   out["time_ms"] = tools::stage_times_json(result);
   out["time_ms"]["wall"] = static_cast<double>(wall.back().count()) / 1e6;
   out["time_clock"] = "stages and total: this thread's CPU time; wall: the monotonic clock";
-  if (!input.image.warnings.empty()) out["warnings"] = input.image.warnings;
+  const auto used = [](const tools::ModelFile& m) { return m.file.empty() ? std::string(tools::kModelNone) : m.file.string(); };
+  out["models"] = {{"ball", used(ball)}, {"robot", used(robot)}};
+  if (!warnings.empty()) out["warnings"] = warnings;
   if (o.draw_candidates) {
     nlohmann::json points = nlohmann::json::array();
     for (const CandidatePoint& c : pipeline.candidates().points()) points.push_back({c.pixel.u, c.pixel.v});
@@ -217,10 +228,13 @@ int main(int argc, char** argv) {
   app.add_option("--ball-mode", o.ball_mode, "the ball's detector: bw (the SPL's black-and-white ball, verified by "
                                              "--ball-model) or orange")
       ->capture_default_str()->check(CLI::IsMember({"bw", "orange"}));
-  app.add_option("--ball-model", o.ball_model, "HOG/SVM model verifying black-and-white ball candidates (e.g. "
-                                               "vision/models/ball.hog; default: none, candidates unverified)");
-  app.add_option("--robot-model", o.robot_model, "HOG/SVM model verifying robot candidates (e.g. "
-                                                 "vision/models/robot.hog; default: none, candidates unverified)");
+  app.add_option("--ball-model", o.ball_model, "HOG/SVM model verifying black-and-white ball candidates: a file "
+                                               "(ringlet-train-hog), auto (the shipped vision/models/ball.hog) or none "
+                                               "(candidates reported unverified); the JSON's models.ball says which")
+      ->capture_default_str();
+  app.add_option("--robot-model", o.robot_model, "HOG/SVM model verifying robot candidates: a file, auto (the shipped "
+                                                 "vision/models/robot.hog) or none (candidates unverified)")
+      ->capture_default_str();
   app.add_flag("--compact", o.compact, "one-line JSON");
   for (CLI::Option* flag : o.camera.add_to(app)) dataset_frame->excludes(flag);  // the frame says which camera took it
   app.callback([&] {

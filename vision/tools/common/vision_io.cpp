@@ -114,6 +114,32 @@ HogSvm load_hog_model(const std::filesystem::path& file, HogTarget target, const
   return *std::move(load.model);
 }
 
+std::filesystem::path shipped_model(HogTarget target) {
+  const char* name = target == HogTarget::kBall ? "ball.hog" : "robot.hog";
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const std::filesystem::path installed = self.parent_path().parent_path() / RINGLET_INSTALL_MODELS_SUBDIR / name;
+    if (std::filesystem::is_regular_file(installed, ec)) return installed;
+  }
+  const std::filesystem::path source = std::filesystem::path(RINGLET_SOURCE_MODELS_DIR) / name;
+  if (std::filesystem::is_regular_file(source, ec)) return source;
+  return {};
+}
+
+ModelFile model_file(const std::string& flag_value, HogTarget target, const std::string& flag) {
+  if (flag_value == kModelNone) return {};
+  if (flag_value != kModelAuto) return {flag_value, {}};
+  ModelFile m{shipped_model(target), {}};
+  if (m.file.empty()) {
+    const std::string what = target == HogTarget::kBall ? "ball" : "robot";
+    m.warning = "no " + what + " model shipped beside this program (<prefix>/" + RINGLET_INSTALL_MODELS_SUBDIR +
+                ") or in " + RINGLET_SOURCE_MODELS_DIR + ": " + what + " candidates are reported unverified; give one with " +
+                flag + " FILE";
+  }
+  return m;
+}
+
 CLI::Validator finite_range(double lo, double hi, const std::string& unit) {
   return CLI::Validator(
       [lo, hi, unit](const std::string& text) -> std::string {

@@ -66,6 +66,24 @@ struct LoadedImage {
 /// when it does not load or is a model for the other target.
 [[nodiscard]] HogSvm load_hog_model(const std::filesystem::path& file, HogTarget target, const std::string& flag);
 
+/// What a --ball-model / --robot-model flag says: "auto" (the default) is the shipped model
+/// (shipped_model), "none" is no model (candidates reported unverified), anything else a file.
+inline constexpr const char* kModelAuto = "auto";
+inline constexpr const char* kModelNone = "none";
+
+/// The model file shipped for `target` (ball.hog, robot.hog): where the package installs it beside
+/// the running program (<prefix>/share/ringlet/vision/models, from <prefix>/bin), else the source
+/// tree's vision/models this program was built from. Empty when neither exists.
+[[nodiscard]] std::filesystem::path shipped_model(HogTarget target);
+
+/// The file a flag's value names: empty for "none", and for "auto" when no model is shipped (then
+/// `warning` says where the tool looked and which flag gives one).
+struct ModelFile {
+  std::filesystem::path file;
+  std::string warning;
+};
+[[nodiscard]] ModelFile model_file(const std::string& flag_value, HogTarget target, const std::string& flag);
+
 /// Camera and head options shared by the tools: image size, field of view (or fx/fy/cx/cy),
 /// mount, head yaw and pitch, torso pitch and roll (degrees). Every number must be finite and in
 /// its range (the --help text shows each range; yaw and pitch are the NAO's joint ranges,

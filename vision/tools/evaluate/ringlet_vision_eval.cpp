@@ -24,6 +24,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <tuple>
 #include <vector>
 #include <unistd.h>
 
@@ -76,14 +77,17 @@ int main(int argc, char** argv) {
       ->capture_default_str()->check(tools::finite_range(0.0, 1000.0, "px"));
   app.add_option("--min-coverage", o.match.min_coverage, "matching: share of a true segment to cover for recall")
       ->capture_default_str()->check(tools::finite_range(0.0, 1.0, ""));
-  std::string ball_mode = "bw", ball_model, robot_model;
+  std::string ball_mode = "bw", ball_model = tools::kModelAuto, robot_model = tools::kModelAuto;
   app.add_option("--ball-mode", ball_mode, "the ball's detector: bw (the SPL's black-and-white ball, HOG/SVM-verified "
                                            "with --ball-model) or orange")
       ->capture_default_str()->check(CLI::IsMember({"bw", "orange"}));
-  app.add_option("--ball-model", ball_model, "HOG/SVM model verifying black-and-white ball candidates (e.g. "
-                                             "vision/models/ball.hog; default: none, candidates unverified)");
-  app.add_option("--robot-model", robot_model, "HOG/SVM model verifying robot candidates (e.g. "
-                                               "vision/models/robot.hog; default: none, candidates unverified)");
+  app.add_option("--ball-model", ball_model, "HOG/SVM model verifying black-and-white ball candidates: a file "
+                                             "(ringlet-train-hog), auto (the shipped vision/models/ball.hog) or none "
+                                             "(candidates reported unverified); the report names the model used")
+      ->capture_default_str();
+  app.add_option("--robot-model", robot_model, "HOG/SVM model verifying robot candidates: a file, auto (the shipped "
+                                               "vision/models/robot.hog) or none (candidates unverified)")
+      ->capture_default_str();
   app.add_option("--seed", o.vision.ransac.seed, "RANSAC seed (each frame's stream is derived from it): the spread of "
                                                 "the line figures over a few seeds shows how much of a difference is "
                                                 "chance")
@@ -97,8 +101,13 @@ int main(int argc, char** argv) {
     o.tune_set = tune_set;
     if (!tune_set.empty() && app.count("--tune") == 0) o.tune_frames = 0;  // all of the tuning set
     o.vision.ball.mode = ball_mode == "orange" ? BallMode::kOrange : BallMode::kBlackWhite;
-    o.ball_model = ball_model;
-    o.robot_model = robot_model;
+    for (const auto& [value, target, flag, file] :
+         {std::tuple{&ball_model, HogTarget::kBall, "--ball-model", &o.ball_model},
+          std::tuple{&robot_model, HogTarget::kRobot, "--robot-model", &o.robot_model}}) {
+      tools::ModelFile m = tools::model_file(*value, target, flag);
+      if (!m.warning.empty()) std::cerr << "ringlet-vision-eval: warning: " << m.warning << "\n";
+      *file = std::move(m.file);
+    }
     o.disjoint_from.assign(disjoint_from.begin(), disjoint_from.end());
     if (!quiet) {
       const bool tty = isatty(fileno(stderr)) != 0;
