@@ -359,5 +359,39 @@ TEST_F(VisionCli, BodyTiltFlagsPutTheBallWhereItIs) {
   }
 }
 
+// --auto-pitch: a photo whose head pitch is given 3° off (a camera mounted off, a guessed angle)
+// is run at the pitch its field lines agree with. 1.5 m before a penalty area, looking at it: its
+// front line and both sides are in view. Told the right pitch, it stays.
+TEST_F(VisionCli, AutoPitchCorrectsAPitchGivenWrong) {
+  sim_hal::CameraRenderer renderer(sim_hal::load_world(RINGLET_SIM_WORLDS_DIR "/spl_field.world"), sim_hal::CameraSpec{}, 3);
+  const double pitch_deg = 24.0, yaw_deg = 10.0;
+  renderer.render({1.5, -0.6, std::acos(0.0)}, {hal::deg_to_rad(yaw_deg), hal::deg_to_rad(pitch_deg)});
+  const cv::Mat bgr(480, 640, CV_8UC3, const_cast<std::uint8_t*>(renderer.bgr().data()));
+  const fs::path file = dir_ / "penalty_area.png";
+  ASSERT_TRUE(cv::imwrite(file.string(), bgr));
+  const auto corrected = [&](double given_deg) {
+    const ToolRun r = run(file.string() + " --auto-pitch --compact --yaw " + std::to_string(yaw_deg) + " --pitch " +
+                          std::to_string(given_deg));
+    EXPECT_EQ(r.rc, 0) << r.out;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    const nlohmann::json& c = j.at("pitch_check");
+    EXPECT_TRUE(c.at("rounds").at(0).at("valid").get<bool>()) << r.out;
+    EXPECT_GE(c.at("rounds").at(0).at("pairs").get<int>(), 2) << r.out;
+    EXPECT_NEAR(c.at("given_head_pitch_deg").get<double>(), given_deg, 1e-6);
+    EXPECT_EQ(j.at("posture_deg").at("head_pitch").get<double>(), c.at("head_pitch_deg").get<double>());
+    EXPECT_FALSE(j.contains("warnings")) << r.out;
+    return c.at("head_pitch_deg").get<double>();
+  };
+  EXPECT_NEAR(corrected(pitch_deg + 3.0), pitch_deg, 0.5);
+  EXPECT_NEAR(corrected(pitch_deg - 3.0), pitch_deg, 0.5);
+  EXPECT_NEAR(corrected(pitch_deg), pitch_deg, 0.5);
+  // Without the flag nothing is checked or changed.
+  const ToolRun plain = run(file.string() + " --compact --yaw " + std::to_string(yaw_deg) + " --pitch 27");
+  ASSERT_EQ(plain.rc, 0) << plain.out;
+  const nlohmann::json p = nlohmann::json::parse(plain.out);
+  EXPECT_FALSE(p.contains("pitch_check"));
+  EXPECT_EQ(p.at("posture_deg").at("head_pitch").get<double>(), 27.0);
+}
+
 }  // namespace
 }  // namespace ringlet

@@ -26,6 +26,7 @@
 #include "ringlet/hal/camera_geometry.hpp"
 #include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/vision/pipeline.hpp"
+#include "ringlet/vision/pitch_check.hpp"
 #include "class_drawing.hpp"
 #include "dataset_frame.hpp"
 #include "vision_io.hpp"
@@ -48,6 +49,7 @@ struct Options {
   int skip = RansacParams{}.skip;
   int repeat = 1;
   bool compact = false;
+  bool auto_pitch = false;
   std::string ball_mode = "bw";
   std::string ball_model = tools::kModelAuto;
   std::string robot_model = tools::kModelAuto;
@@ -94,6 +96,30 @@ Input read_input(const Options& o) {
   return in;
 }
 
+/// --auto-pitch (pitch_check.hpp): `posture` becomes the corrected one; returns what was found.
+nlohmann::json correct_pitch(VisionPipeline& pipeline, const hal::FrameView& view, hal::CameraPosture& posture,
+                             std::vector<std::string>& warnings) {
+  const double given_deg = hal::rad_to_deg(posture.head.pitch);
+  const PitchCorrection c = correct_head_pitch(pipeline, view, posture);
+  nlohmann::json rounds = nlohmann::json::array();
+  for (int i = 0; i < c.round_count; ++i) {
+    const PitchCheck& r = c.rounds[static_cast<std::size_t>(i)];
+    rounds.push_back({{"valid", r.valid}, {"offset_deg", r.offset_deg}, {"residual_deg", r.residual_deg},
+                      {"residual_at_given_deg", r.residual_at_given_deg}, {"segments", r.segments}, {"pairs", r.pairs}});
+  }
+  if (!c.corrected()) {
+    warnings.emplace_back("--auto-pitch: too few field lines, or lines no pitch squares (pitch_check.rounds says "
+                          "which); the given pitch is kept");
+    std::cerr << "ringlet-vision: warning: " << warnings.back() << "\n";
+  }
+  posture = c.posture;
+  const double used_deg = hal::rad_to_deg(posture.head.pitch);
+  std::cerr << std::fixed << std::setprecision(2) << "ringlet-vision: --auto-pitch: head pitch " << given_deg << " -> "
+            << used_deg << " deg\n";
+  return {{"given_head_pitch_deg", given_deg}, {"head_pitch_deg", used_deg}, {"correction_deg", used_deg - given_deg},
+          {"rounds", rounds}};
+}
+
 int run(const Options& o) {
   VisionConfig config;
   // Both are checked before anything runs, so a bad table or image never gives partial output.
@@ -126,13 +152,16 @@ int run(const Options& o) {
   for (HogSvm& m : models) {
     if (const std::string why = pipeline.set_classifier(std::move(m)); !why.empty()) throw tools::ToolError(why);
   }
-  const hal::CameraPosture& posture = input.posture;
+  hal::CameraPosture posture = input.posture;
+  const hal::FrameView view = input.view();
+  nlohmann::json pitch_json;
+  if (o.auto_pitch) pitch_json = correct_pitch(pipeline, view, posture, warnings);
   // Stages are timed on this thread's CPU clock (what the robot's budget is judged on; other
   // processes on the host do not inflate it), the whole frame on the wall clock too. The deadline
   // never expires: a desktop run does all the work.
   hal::ThreadStopwatch watch;
   const Deadline timed{&watch, hal::Nanos::max(), true};
-  const hal::FrameView view = input.view();
+  pipeline.forget_history();  // as a fresh run at the posture used
   std::vector<hal::Nanos> cpu, wall;
   std::vector<std::vector<hal::Nanos>> stages(kStageCount);
   cpu.reserve(static_cast<std::size_t>(o.repeat));
@@ -149,6 +178,10 @@ int run(const Options& o) {
   out["image"] = input.name;
   if (input.dataset) out["sequence"] = view.sequence;
   out["posture_deg"] = input.posture_deg;
+  if (o.auto_pitch) {
+    out["posture_deg"]["head_pitch"] = hal::rad_to_deg(posture.head.pitch);
+    out["pitch_check"] = pitch_json;
+  }
   out["time_ms"] = tools::stage_times_json(result);
   out["time_ms"]["wall"] = static_cast<double>(wall.back().count()) / 1e6;
   out["time_clock"] = "stages and total: this thread's CPU time; wall: the monotonic clock";
@@ -235,6 +268,10 @@ int main(int argc, char** argv) {
   app.add_option("--robot-model", o.robot_model, "HOG/SVM model verifying robot candidates: a file, auto (the shipped "
                                                  "vision/models/robot.hog) or none (candidates unverified)")
       ->capture_default_str();
+  app.add_flag("--auto-pitch", o.auto_pitch,
+               "correct the head pitch from the field lines themselves (any two SPL lines are parallel or square "
+               "on the ground; a pitch that is off bends them): run, estimate the offset within ±8°, run again at "
+               "the corrected pitch; the JSON's pitch_check says what was found and posture_deg the pitch used");
   app.add_flag("--compact", o.compact, "one-line JSON");
   for (CLI::Option* flag : o.camera.add_to(app)) dataset_frame->excludes(flag);  // the frame says which camera took it
   app.callback([&] {

@@ -14,6 +14,7 @@
 #include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/horizon.hpp"
+#include "ringlet/vision/pitch_check.hpp"
 #include "vision_io.hpp"
 
 namespace ringlet::vision::evaluate {
@@ -129,6 +130,8 @@ EvalReport run_evaluation(const EvalOptions& o) {
   report.dataset = o.dataset.string();
   report.lut = o.lut.empty() ? "default thresholds" : o.lut.string();
   report.ransac_seed = o.vision.ransac.seed;
+  report.pitch_error_deg = o.pitch_error_deg;
+  report.auto_pitch = o.auto_pitch;
   report.match = o.match;
   report.circle_match = o.circle_match;
   report.mark_match = o.mark_match;
@@ -235,7 +238,18 @@ EvalReport run_evaluation(const EvalOptions& o) {
     // A deadline that never comes, on the real clock: it only makes the pipeline time its stages.
     const Deadline laps{&stopwatch, hal::Nanos::max(), false};
     const auto start = Clock::now();
-    const VisionResult& result = pipeline->process(view, f.meta.head, laps);
+    hal::CameraPosture posture{hal::BodyTilt{}, f.meta.head};
+    posture.head.pitch += hal::deg_to_rad(o.pitch_error_deg);
+    if (o.auto_pitch) {
+      const PitchCorrection c = correct_head_pitch(*pipeline, view, posture);
+      posture = c.posture;
+      pipeline->forget_history();
+      if (c.corrected()) {
+        ++report.pitch_corrected;
+        report.pitch_abs_error_deg.push_back(std::abs(hal::rad_to_deg(posture.head.pitch - f.meta.head.pitch)));
+      }
+    }
+    const VisionResult& result = pipeline->process(view, posture, laps);
     report.ringlet.time_ms.push_back(elapsed_ms(start));
     record_model(result, report);
     if (result.status != VisionStatus::kOk) throw tools::ToolError(test[i].string() + ": the pipeline refused the frame");
@@ -245,7 +259,7 @@ EvalReport run_evaluation(const EvalOptions& o) {
       segments.push_back({line.image_start.u, line.image_start.v, line.image_end.u, line.image_end.v});
     }
     // A cross's bars are painted lines too (the truth lists them): scored as its two bars.
-    const hal::CameraPose pose = hal::CameraPose::from_head(f.meta.mount, f.meta.head);
+    const hal::CameraPose pose = hal::CameraPose::from_posture(f.meta.mount, posture);  // where the pipeline put them
     for (std::size_t m = 0; m < result.marks.count; ++m) {
       for (const auto& bar : FieldMarkFinder::bars(result.marks.marks[m], o.vision.marks.bar_length_m)) {
         const auto a = hal::project(f.meta.intrinsics, pose, {bar[0].x, bar[0].y, 0.0});

@@ -47,6 +47,10 @@ struct EvalOptions {
   std::filesystem::path ball_model;
   std::filesystem::path robot_model;
   VisionConfig vision{};       // intrinsics and mount are replaced by each frame's
+  // The head pitch the pipeline is given: each frame's plus this (a camera mounted off, a wrong
+  // joint reading), and with auto_pitch corrected from the lines first (pitch_check.hpp).
+  double pitch_error_deg = 0.0;
+  bool auto_pitch = false;
   /// (stage, done, total): "loading", "tuning", "evaluating".
   std::function<void(const char*, std::size_t, std::size_t)> progress;
 };
@@ -76,6 +80,10 @@ struct EvalReport {
   std::string dataset;
   std::string lut;
   std::uint64_t ransac_seed = 0;
+  double pitch_error_deg = 0.0;       // EvalOptions'
+  bool auto_pitch = false;
+  std::size_t pitch_corrected = 0;     // frames whose pitch --auto-pitch corrected
+  std::vector<double> pitch_abs_error_deg;  // per corrected frame: |pitch used − true pitch|
   std::string test_set;                 // FrameSet::describe() of each
   std::string tuning_set;               // empty: no tuning
   std::vector<std::string> excluded_sets;

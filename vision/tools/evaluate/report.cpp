@@ -155,6 +155,15 @@ void print_report(const EvalReport& r, std::ostream& os) {
   }
   os << "colour table: " << r.lut << "\n";
   os << "RANSAC seed:  " << r.ransac_seed << "\n";
+  if (r.pitch_error_deg != 0.0 || r.auto_pitch) {
+    os << "head pitch:   each frame's " << (r.pitch_error_deg >= 0.0 ? "+ " : "- ") << std::abs(r.pitch_error_deg) << " deg";
+    if (r.auto_pitch) {
+      os << ", corrected from the lines (--auto-pitch) in " << r.pitch_corrected << " of " << r.report_frames
+         << " frames, |error| after: median " << percentile(r.pitch_abs_error_deg, 50.0) << ", p90 "
+         << percentile(r.pitch_abs_error_deg, 90.0) << " deg";
+    }
+    os << "\n";
+  }
   os << "Hough parameters: " << r.hough.describe() << "\n";
   os << "matching: angle <= " << r.match.max_angle_deg << " deg, endpoints <= " << r.match.max_distance_px
      << " px + half line width, recall needs coverage >= " << r.match.min_coverage << ", truths shorter than "
@@ -280,6 +289,11 @@ nlohmann::json report_json(const EvalReport& r) {
   return {{"dataset", r.dataset},
           {"colour_table", r.lut},
           {"ransac_seed", r.ransac_seed},
+          {"pitch", {{"error_deg", r.pitch_error_deg},
+                     {"auto_pitch", r.auto_pitch},
+                     {"corrected_frames", r.pitch_corrected},
+                     {"abs_error_after_deg", {{"median", percentile(r.pitch_abs_error_deg, 50.0)},
+                                              {"p90", percentile(r.pitch_abs_error_deg, 90.0)}}}}},
           {"test_set", r.test_set},
           {"tuning_set", r.tuning_set},
           {"excluded_sets", r.excluded_sets},

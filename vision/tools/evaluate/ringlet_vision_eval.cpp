@@ -92,6 +92,11 @@ int main(int argc, char** argv) {
                                                 "the line figures over a few seeds shows how much of a difference is "
                                                 "chance")
       ->capture_default_str();
+  app.add_option("--pitch-error", o.pitch_error_deg, "give the pipeline each frame's head pitch plus this (deg): how "
+                                                    "much a camera mounted off, or a wrong joint reading, costs")
+      ->capture_default_str()->check(tools::finite_range(-20.0, 20.0, "deg"));
+  app.add_flag("--auto-pitch", o.auto_pitch, "correct each frame's head pitch from its field lines first, as "
+                                            "ringlet-vision --auto-pitch does; the report says how close it came");
   app.add_option("--json", json, "write the full report (per-frame times, tuning) as JSON");
   app.add_option("--svg", svg, "write a comparison chart (SVG)");
   app.add_flag("-q,--quiet", quiet, "no progress output");
