@@ -87,7 +87,10 @@ CameraPose CameraPose::from_body(const CameraMount& mount, const BodyTilt& body,
     head_to_robot = torso_to_robot * head_to_torso;
     position = torso_to_robot * position;  // the torso turns about the robot frame's origin
   }
-  const Eigen::Matrix3d axes = head_to_robot * camera_in_head();
+  // A camera mounted pitched turns about its own x axis (parallel to the pitch joint's), in place;
+  // 0 is skipped like the upright torso, so the nominal mount's poses stay bit for bit.
+  Eigen::Matrix3d axes = head_to_robot * camera_in_head();
+  if (mount.pitch != 0.0) axes = head_to_robot * rotation_y(mount.pitch) * camera_in_head();
   CameraPose pose;
   pose.position = to_vec3(position);
   for (int i = 0; i < 3; ++i) pose.axes[static_cast<std::size_t>(i)] = to_vec3(axes.col(i));

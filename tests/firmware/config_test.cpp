@@ -130,6 +130,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"[telemetry]", "[camera]\nbackend = \"opencv\"\n[telemetry]",
                 "camera.source: the \"opencv\" camera needs a source"},
         BadCase{"[telemetry]", "[camera]\nformat = \"rgb565\"\n[telemetry]", "camera.format: must be one of \"yuyv\", \"bgr\""},
+        BadCase{"[telemetry]", "[camera]\npitch_deg = 20\n[telemetry]", "camera.pitch_deg: must be between -15 and 15, got 20"},
         BadCase{"[telemetry]", "[vision]\nskip = 0\n[telemetry]", "vision.skip: must be between 1 and 1000"},
         BadCase{"[telemetry]", "[vision]\ncolour = \"lut\"\n[telemetry]",
                 "vision.colour: must be one of \"adaptive\", \"table\", got \"lut\""},

@@ -240,5 +240,30 @@ TEST(InertialState, InvalidReadingMeansUpright) {
   EXPECT_EQ(imu.tilt_or_upright().roll, 0.2);
 }
 
+// A camera mounted pitched looks where more head pitch would, but turns in place: the pivot's
+// offset does not swing with it. 0 is the nominal mount, bit for bit.
+TEST(CameraGeometry, AMountedPitchTurnsTheCameraInPlace) {
+  const CameraMount nominal{};
+  CameraMount pitched = nominal;
+  pitched.pitch = deg_to_rad(2.5);
+  const HeadJoints head{0.3, 0.2};
+  const CameraPose a = CameraPose::from_head(pitched, head);
+  const CameraPose more_head = CameraPose::from_head(nominal, {head.yaw, head.pitch + pitched.pitch});
+  const CameraPose as_mounted = CameraPose::from_head(nominal, head);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(a.axes[i].x, more_head.axes[i].x, 1e-12);
+    EXPECT_NEAR(a.axes[i].y, more_head.axes[i].y, 1e-12);
+    EXPECT_NEAR(a.axes[i].z, more_head.axes[i].z, 1e-12);
+  }
+  EXPECT_EQ(a.position.x, as_mounted.position.x);
+  EXPECT_EQ(a.position.y, as_mounted.position.y);
+  EXPECT_EQ(a.position.z, as_mounted.position.z);
+  EXPECT_NE(a.position.x, more_head.position.x);  // more head pitch swings the camera about the pivot
+  CameraMount zero = nominal;
+  zero.pitch = 0.0;
+  const CameraPose z = CameraPose::from_head(zero, head);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(z.axes[i].x, as_mounted.axes[i].x);
+}
+
 }  // namespace
 }  // namespace ringlet::hal

@@ -385,6 +385,13 @@ TEST_F(VisionCli, AutoPitchCorrectsAPitchGivenWrong) {
   EXPECT_NEAR(corrected(pitch_deg + 3.0), pitch_deg, 0.5);
   EXPECT_NEAR(corrected(pitch_deg - 3.0), pitch_deg, 0.5);
   EXPECT_NEAR(corrected(pitch_deg), pitch_deg, 0.5);
+  // The camera's own pitch as mounted (--camera-pitch, [camera] pitch_deg) takes up the error:
+  // then nothing is left to correct.
+  const ToolRun mounted = run(file.string() + " --auto-pitch --compact --yaw " + std::to_string(yaw_deg) + " --pitch " +
+                              std::to_string(pitch_deg + 3.0) + " --camera-pitch -3");
+  ASSERT_EQ(mounted.rc, 0) << mounted.out;
+  EXPECT_NEAR(nlohmann::json::parse(mounted.out).at("pitch_check").at("correction_deg").get<double>(), 0.0, 0.5)
+      << mounted.out;
   // Without the flag nothing is checked or changed.
   const ToolRun plain = run(file.string() + " --compact --yaw " + std::to_string(yaw_deg) + " --pitch 27");
   ASSERT_EQ(plain.rc, 0) << plain.out;

@@ -333,6 +333,7 @@ void read_camera(Section& camera, CameraSettings& c) {
   c.mount.pivot_height = camera.number("pivot_height_m", c.mount.pivot_height, 0.01, 10.0);
   c.mount.forward = camera.number("forward_m", c.mount.forward, -1.0, 1.0);
   c.mount.up = camera.number("up_m", c.mount.up, -1.0, 1.0);
+  c.mount.pitch = hal::deg_to_rad(camera.number("pitch_deg", hal::rad_to_deg(c.mount.pitch), -15.0, 15.0));
   if (c.backend == "opencv" && c.source.empty()) {
     camera.fail_missing("source", "the \"opencv\" camera needs a source (a device, a video file or an image folder)");
   }

@@ -26,7 +26,7 @@ std::string percent(double f) {
 AutoCalibration auto_calibrate(const std::vector<std::string>& photos, const AutoOptions& o) {
   if (photos.empty()) throw ToolError("--auto: no photos given (ringlet-vision-calibrate --auto PHOTO.jpg... --out TABLE)");
   const hal::CameraIntrinsics k = o.camera.intrinsics();
-  const hal::CameraPose pose = hal::CameraPose::from_head(o.camera.mount, o.camera.head());
+  const hal::CameraPose pose = hal::CameraPose::from_head(o.camera.camera_mount(), o.camera.head());
   std::vector<int> first_row(static_cast<std::size_t>(k.width));
   const int horizon = horizon_rows(k, pose, 2, first_row);
   AutoCalibration out;

@@ -76,7 +76,7 @@ Input read_input(const Options& o) {
   if (o.dataset_frame.empty()) {
     in.name = o.image;
     in.intrinsics = o.camera.intrinsics();
-    in.mount = o.camera.mount;
+    in.mount = o.camera.camera_mount();
     in.posture = o.camera.posture();
     in.posture_deg = {{"head_yaw", o.camera.yaw_deg},
                       {"head_pitch", o.camera.pitch_deg},

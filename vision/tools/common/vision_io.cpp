@@ -185,6 +185,10 @@ std::vector<CLI::Option*> CameraOptions::add_to(CLI::App& app, bool with_head) {
       ->capture_default_str()->check(finite_range(-1.0, 1.0, "m"));
   app.add_option("--camera-up", mount.up, "camera above the pivot (m)")
       ->capture_default_str()->check(finite_range(-1.0, 1.0, "m"));
+  app.add_option("--camera-pitch", camera_pitch_deg,
+                 "the camera's own pitch in the head as mounted (deg, down positive; ringlet-vision --auto-pitch's "
+                 "correction_deg, the median over a few photos, measures it)")
+      ->capture_default_str()->check(finite_range(-15.0, 15.0, "deg"));
   if (with_head) {
     using B = hal::BodyTiltRange;
     app.add_option("--body-pitch", body_pitch_deg,

@@ -94,7 +94,8 @@ struct CameraOptions {
   double hfov_deg = 57.0;
   double vfov_deg = 44.0;
   double fx = 0.0, fy = 0.0, cx = 0.0, cy = 0.0;  // 0: from the field of view
-  hal::CameraMount mount{};
+  hal::CameraMount mount{};     // pitch from camera_pitch_deg (camera_mount())
+  double camera_pitch_deg = 0.0;
   double yaw_deg = 0.0;
   double pitch_deg = 20.0;
   double body_pitch_deg = 0.0;  // the torso's tilt (hal::BodyTilt): forward positive
@@ -106,6 +107,11 @@ struct CameraOptions {
   [[nodiscard]] hal::HeadJoints head() const;
   [[nodiscard]] hal::BodyTilt body() const;
   [[nodiscard]] hal::CameraPosture posture() const { return {body(), head()}; }
+  [[nodiscard]] hal::CameraMount camera_mount() const {
+    hal::CameraMount m = mount;
+    m.pitch = hal::deg_to_rad(camera_pitch_deg);
+    return m;
+  }
 };
 
 /// A CLI11 check: a finite number in [lo, hi] (`unit` follows the range in the message).

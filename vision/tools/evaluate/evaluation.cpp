@@ -66,7 +66,8 @@ bool same_camera(const VisionConfig& c, const DatasetFrame& f) {
   const auto& a = c.intrinsics;
   const auto& b = f.intrinsics;
   return a.width == b.width && a.height == b.height && a.fx == b.fx && a.fy == b.fy && a.cx == b.cx && a.cy == b.cy &&
-         c.mount.pivot_height == f.mount.pivot_height && c.mount.forward == f.mount.forward && c.mount.up == f.mount.up;
+         c.mount.pivot_height == f.mount.pivot_height && c.mount.forward == f.mount.forward && c.mount.up == f.mount.up &&
+         c.mount.pitch == f.mount.pitch;
 }
 
 /// The horizon mask the pipeline itself uses (same margin), as the first usable row per column.

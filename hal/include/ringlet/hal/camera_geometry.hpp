@@ -47,12 +47,15 @@ struct CameraIntrinsics {
   [[nodiscard]] static CameraIntrinsics nao() noexcept { return from_fov(640, 480, 57.0, 44.0); }
 };
 
-/// Where the camera sits on the head: the pan-tilt pivot's height above the ground, and the
-/// camera's offset from the pivot in the head frame (ahead, up).
+/// Where the camera sits on the head: the pan-tilt pivot's height above the ground, the camera's
+/// offset from the pivot in the head frame (ahead, up), and how far it is pitched down in the
+/// head as mounted (a real head's camera sits a degree or two off; `ringlet-vision --auto-pitch`
+/// measures it from the field lines).
 struct CameraMount {
   double pivot_height = 0.45;  // m
   double forward = 0.05;       // m
   double up = 0.06;            // m
+  double pitch = 0.0;          // rad, down positive (as the head's pitch)
 };
 
 /// The NAO's head joint ranges (Aldebaran's NAO V6 joint documentation: HeadYaw ±119.5°, HeadPitch
