@@ -242,12 +242,14 @@ EvalReport run_evaluation(const EvalOptions& o) {
     hal::CameraPosture posture{hal::BodyTilt{}, f.meta.head};
     posture.head.pitch += hal::deg_to_rad(o.pitch_error_deg);
     if (o.auto_pitch) {
+      const double given = posture.head.pitch;
       const PitchCorrection c = correct_head_pitch(*pipeline, view, posture);
       posture = c.posture;
       pipeline->forget_history();
       if (c.corrected()) {
         ++report.pitch_corrected;
         report.pitch_abs_error_deg.push_back(std::abs(hal::rad_to_deg(posture.head.pitch - f.meta.head.pitch)));
+        report.pitch_correction_deg.push_back(hal::rad_to_deg(posture.head.pitch - given));
       }
     }
     const VisionResult& result = pipeline->process(view, posture, laps);

@@ -84,6 +84,8 @@ struct EvalReport {
   bool auto_pitch = false;
   std::size_t pitch_corrected = 0;     // frames whose pitch --auto-pitch corrected
   std::vector<double> pitch_abs_error_deg;  // per corrected frame: |pitch used − true pitch|
+  std::vector<double> pitch_correction_deg; // per corrected frame: pitch used − pitch given (their median
+                                            //   over a set is the camera's pitch as mounted)
   std::string test_set;                 // FrameSet::describe() of each
   std::string tuning_set;               // empty: no tuning
   std::vector<std::string> excluded_sets;

@@ -160,7 +160,8 @@ void print_report(const EvalReport& r, std::ostream& os) {
     if (r.auto_pitch) {
       os << ", corrected from the lines (--auto-pitch) in " << r.pitch_corrected << " of " << r.report_frames
          << " frames, |error| after: median " << percentile(r.pitch_abs_error_deg, 50.0) << ", p90 "
-         << percentile(r.pitch_abs_error_deg, 90.0) << " deg";
+         << percentile(r.pitch_abs_error_deg, 90.0) << " deg; median correction "
+         << percentile(r.pitch_correction_deg, 50.0) << " deg (the camera's pitch as mounted, over the set)";
     }
     os << "\n";
   }
@@ -292,6 +293,7 @@ nlohmann::json report_json(const EvalReport& r) {
           {"pitch", {{"error_deg", r.pitch_error_deg},
                      {"auto_pitch", r.auto_pitch},
                      {"corrected_frames", r.pitch_corrected},
+                     {"median_correction_deg", percentile(r.pitch_correction_deg, 50.0)},
                      {"abs_error_after_deg", {{"median", percentile(r.pitch_abs_error_deg, 50.0)},
                                               {"p90", percentile(r.pitch_abs_error_deg, 90.0)}}}}},
           {"test_set", r.test_set},
