@@ -5,7 +5,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <numbers>
 
 #include "ringlet/hal/geometry.hpp"
 
@@ -31,11 +30,11 @@ bool one_line(const ImageSegment& p, double lp, const ImageSegment& q, double lq
   return off(q.a) <= params.collinear_px && off(q.b) <= params.collinear_px;
 }
 
-// The weighted mean square of the pairs' sin(departure from parallel or square) at one pitch
-// offset; false when a picked segment leaves the ground there.
-using PairMask = std::array<bool, kMaxSegments * kMaxSegments>;
-using SegmentMask = std::array<bool, kMaxSegments>;
+using PairMask = std::array<bool, kMaxSegments * kMaxSegments>;  // [i * kMaxSegments + j], i < j: not one line
+using SegmentMask = std::array<bool, kMaxSegments>;                // still used (not left out)
 
+// The weighted mean square of the active pairs' sin(departure from parallel or square) at one
+// pitch offset; false when an active segment leaves the ground there.
 bool departure(const Picked& s, const PairMask& informative, const SegmentMask& active, const hal::CameraIntrinsics& k,
                const hal::CameraMount& mount, hal::CameraPosture posture, double offset_rad, double& mean_square) noexcept {
   posture.head.pitch += offset_rad;
@@ -70,7 +69,7 @@ bool departure(const Picked& s, const PairMask& informative, const SegmentMask& 
 // The grid search over the active segments: the best offset (index) and its mean square, and the
 // mean square at the given pitch.
 struct Search {
-  bool ok = false;  // the active segments stay on the ground at the given pitch (they always do: picked so)
+  bool ok = false;  // the active segments are on the ground at the given pitch
   int pairs = 0;
   int best_i = 0;
   double best = 0.0, at_given = 0.0;
