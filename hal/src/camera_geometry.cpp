@@ -89,8 +89,9 @@ CameraPose CameraPose::from_body(const CameraMount& mount, const BodyTilt& body,
   }
   // A camera mounted pitched turns about its own x axis (parallel to the pitch joint's), in place;
   // 0 is skipped like the upright torso, so the nominal mount's poses stay bit for bit.
-  Eigen::Matrix3d axes = head_to_robot * camera_in_head();
-  if (mount.pitch != 0.0) axes = head_to_robot * rotation_y(mount.pitch) * camera_in_head();
+  Eigen::Matrix3d mount_to_robot = head_to_robot;
+  if (mount.pitch != 0.0) mount_to_robot = head_to_robot * rotation_y(mount.pitch);
+  const Eigen::Matrix3d axes = mount_to_robot * camera_in_head();
   CameraPose pose;
   pose.position = to_vec3(position);
   for (int i = 0; i < 3; ++i) pose.axes[static_cast<std::size_t>(i)] = to_vec3(axes.col(i));

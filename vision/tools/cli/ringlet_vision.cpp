@@ -137,16 +137,10 @@ int run(const Options& o) {
   config.ball.mode = o.ball_mode == "orange" ? BallMode::kOrange : BallMode::kBlackWhite;
   // Both models are loaded (and a bad file refused) before anything runs.
   std::vector<std::string> warnings = input.image.warnings;
-  const tools::ModelFile ball = tools::model_file(o.ball_model, HogTarget::kBall, "--ball-model");
-  const tools::ModelFile robot = tools::model_file(o.robot_model, HogTarget::kRobot, "--robot-model");
+  const auto [ball, robot] = tools::model_files(o.ball_model, o.robot_model, "ringlet-vision", &warnings);
   std::vector<HogSvm> models;
   if (!ball.file.empty()) models.push_back(tools::load_hog_model(ball.file, HogTarget::kBall, "--ball-model"));
   if (!robot.file.empty()) models.push_back(tools::load_hog_model(robot.file, HogTarget::kRobot, "--robot-model"));
-  for (const tools::ModelFile* m : {&ball, &robot}) {
-    if (m->warning.empty()) continue;
-    std::cerr << "ringlet-vision: warning: " << m->warning << "\n";
-    warnings.push_back(m->warning);
-  }
 
   VisionPipeline pipeline(config, std::move(table));
   for (HogSvm& m : models) {

@@ -140,6 +140,17 @@ ModelFile model_file(const std::string& flag_value, HogTarget target, const std:
   return m;
 }
 
+ModelFiles model_files(const std::string& ball_flag, const std::string& robot_flag, const char* tool,
+                       std::vector<std::string>* warnings) {
+  ModelFiles m{model_file(ball_flag, HogTarget::kBall, "--ball-model"), model_file(robot_flag, HogTarget::kRobot, "--robot-model")};
+  for (const ModelFile* f : {&m.ball, &m.robot}) {
+    if (f->warning.empty()) continue;
+    std::cerr << tool << ": warning: " << f->warning << "\n";
+    if (warnings != nullptr) warnings->push_back(f->warning);
+  }
+  return m;
+}
+
 CLI::Validator finite_range(double lo, double hi, const std::string& unit) {
   return CLI::Validator(
       [lo, hi, unit](const std::string& text) -> std::string {

@@ -84,6 +84,14 @@ struct ModelFile {
 };
 [[nodiscard]] ModelFile model_file(const std::string& flag_value, HogTarget target, const std::string& flag);
 
+/// Both tools' --ball-model and --robot-model, resolved (model_file); each warning is printed to
+/// stderr as "<tool>: warning: ..." and appended to `warnings` when given.
+struct ModelFiles {
+  ModelFile ball, robot;
+};
+[[nodiscard]] ModelFiles model_files(const std::string& ball_flag, const std::string& robot_flag, const char* tool,
+                                     std::vector<std::string>* warnings = nullptr);
+
 /// Camera and head options shared by the tools: image size, field of view (or fx/fy/cx/cy),
 /// mount, head yaw and pitch, torso pitch and roll (degrees). Every number must be finite and in
 /// its range (the --help text shows each range; yaw and pitch are the NAO's joint ranges,

@@ -24,7 +24,6 @@
 #include <fstream>
 #include <iostream>
 #include <string>
-#include <tuple>
 #include <vector>
 #include <unistd.h>
 
@@ -106,13 +105,9 @@ int main(int argc, char** argv) {
     o.tune_set = tune_set;
     if (!tune_set.empty() && app.count("--tune") == 0) o.tune_frames = 0;  // all of the tuning set
     o.vision.ball.mode = ball_mode == "orange" ? BallMode::kOrange : BallMode::kBlackWhite;
-    for (const auto& [value, target, flag, file] :
-         {std::tuple{&ball_model, HogTarget::kBall, "--ball-model", &o.ball_model},
-          std::tuple{&robot_model, HogTarget::kRobot, "--robot-model", &o.robot_model}}) {
-      tools::ModelFile m = tools::model_file(*value, target, flag);
-      if (!m.warning.empty()) std::cerr << "ringlet-vision-eval: warning: " << m.warning << "\n";
-      *file = std::move(m.file);
-    }
+    const tools::ModelFiles models = tools::model_files(ball_model, robot_model, "ringlet-vision-eval");
+    o.ball_model = models.ball.file;
+    o.robot_model = models.robot.file;
     o.disjoint_from.assign(disjoint_from.begin(), disjoint_from.end());
     if (!quiet) {
       const bool tty = isatty(fileno(stderr)) != 0;
