@@ -3,11 +3,13 @@
 // levels, and a plain weighted sum.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/pipeline.hpp"
+#include "ringlet/vision/robots.hpp"
 #include "synthetic_field.hpp"
 
 namespace ringlet::vision {
@@ -135,6 +137,79 @@ TEST(VisionCost, HogClassificationsAreCountedAndDegradingDropsTheirCost) {
   // robot window costs ~0.4 ms on the board); the degrade policy then runs level 1, which must fit.
   EXPECT_LT(modelled_cost(with.process(frame.view, cam.head, {}, 1).work), hal::Nanos{3'000'000})
       << "level 1 (fewer classifications) fits the 3 ms budget";
+}
+
+// In lockstep the executive judges the vision task on the modelled cost, so the pipeline fits its
+// robot classifications, which run last, to the modelled budget: on a frame with a robot, a budget
+// short of one window cuts the window and nothing else (the lines are the same), the frame's
+// modelled cost stays inside it, and an unlimited budget classifies as before.
+TEST(VisionCost, TheRobotClassificationsFitTheModelledBudget) {
+  testing::Camera cam;
+  const hal::CameraPose pose = cam.pose();
+  const int w = cam.k.width, h = cam.k.height;
+  // Gray8: grey 100 is field, 230 line (Gray8 classifies with U = V = 128).
+  std::vector<std::uint8_t> img(static_cast<std::size_t>(w * h), 100);
+  const auto paint = [&](int x0, int x1, int y0, int y1) {
+    for (int y = std::max(0, y0); y < std::min(y1, h); ++y) {
+      for (int x = std::max(0, x0); x < std::min(x1, w); ++x) img[static_cast<std::size_t>(y * w + x)] = 230;
+    }
+  };
+  const RobotDetector probe(RobotParams{});
+  const hal::RobotPoint at{1.4, 0.1};
+  const auto foot = hal::project(cam.k, pose, {at.x, at.y, 0.0});
+  ASSERT_TRUE(foot.has_value());
+  const double tall = probe.expected_height_px(cam.k, pose, at);
+  ASSERT_GT(tall, 60.0);
+  paint(static_cast<int>(foot->u - 0.25 * tall), static_cast<int>(foot->u + 0.25 * tall),
+        static_cast<int>(foot->v - tall), static_cast<int>(foot->v));  // the robot
+  paint(0, w, static_cast<int>(foot->v) + 40, static_cast<int>(foot->v) + 47);  // a line across the field
+  auto frame = testing::render(testing::Scene{}, cam, hal::PixelFormat::kGray8);
+  hal::FrameView view = frame.view;
+  view.data = img.data();
+  view.stride = w;
+  view.format = hal::PixelFormat::kGray8;
+
+  ColourThresholds t;
+  t.field = {50, 150, 100, 156, 100, 156};
+  t.line = {200, 255, 100, 156, 100, 156};
+  t.ball = {0, 0, 0, 0, 0, 0};
+  VisionConfig config;
+  config.colour_mode = ColourMode::kTable;
+  VisionPipeline pipeline(config, ColourTable::from_thresholds(t));
+  ASSERT_EQ(pipeline.set_classifier(accept_all(HogTarget::kRobot, HogParams::robot())), "");
+
+  const VisionResult full = pipeline.process(view, cam.posture());
+  ASSERT_GE(full.robots.classified, 1) << "the robot is a candidate and is classified";
+  ASSERT_GE(full.robots.count, 1U);
+  EXPECT_TRUE(full.robots.robots[0].verified);
+  ASSERT_GE(full.line_count, 1U);
+  EXPECT_EQ(full.robots.classifications_cut, 0);
+  EXPECT_FALSE(full.cut.deadline_hit);
+
+  WorkCount without_windows = full.work;
+  without_windows.robot_windows = 0;
+  const hal::Nanos one_window = modelled_cost(full.work) - modelled_cost(without_windows);
+  ASSERT_GT(one_window.count(), 0);
+  Deadline short_of_one;
+  short_of_one.model_budget = modelled_cost(without_windows) + one_window / 2;
+  const VisionResult cut = pipeline.process(view, cam.posture(), short_of_one);
+  EXPECT_EQ(cut.robots.classified, 0);
+  EXPECT_EQ(cut.robots.classifications_cut, full.robots.classified);
+  EXPECT_TRUE(cut.cut.deadline_hit);
+  EXPECT_LE(modelled_cost(cut.work), short_of_one.model_budget);
+  EXPECT_EQ(cut.work.robot_windows, 0);
+  ASSERT_EQ(cut.line_count, full.line_count) << "the lines came first";
+  for (std::size_t i = 0; i < cut.line_count; ++i) {
+    EXPECT_EQ(cut.lines[i].image_start.u, full.lines[i].image_start.u);
+    EXPECT_EQ(cut.lines[i].image_end.v, full.lines[i].image_end.v);
+  }
+
+  Deadline exactly_enough;
+  exactly_enough.model_budget = modelled_cost(full.work);
+  const VisionResult fits = pipeline.process(view, cam.posture(), exactly_enough);
+  EXPECT_EQ(fits.robots.classified, full.robots.classified);
+  EXPECT_EQ(fits.robots.count, full.robots.count);
+  EXPECT_EQ(modelled_cost(fits.work), modelled_cost(full.work));
 }
 
 TEST(VisionCost, TheModelIsAWeightedSumTimesTheBoardFactor) {

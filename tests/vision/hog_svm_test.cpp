@@ -145,6 +145,35 @@ TEST(HogSvm, CommittedModelsLoad) {
   }
 }
 
+// The descriptor's exact bits: the gradient pass is vectorised (vision/CMakeLists.txt), and SSE on
+// x86-64 and NEON on aarch64 must give what a scalar pass would, bit for bit, so that a simulated
+// run is the same on both. The same constant is checked in both trees (the aarch64 one under
+// qemu). Patches: noise (every octant and bin, both wraps), ramps, flat (zero gradients).
+TEST(HogExtractor, DescriptorBitsAreTheSameOnEveryTarget) {
+  std::uint64_t hash = 1469598103934665603ULL;  // FNV-1a over every float's bits
+  for (const HogParams& p : {HogParams::ball(), HogParams::robot()}) {
+    HogExtractor hog(p);
+    std::vector<float> out(hog.feature_length());
+    std::vector<std::uint8_t> patch(static_cast<std::size_t>(p.window_width * p.window_height));
+    SplitMix64 g(11);
+    for (int kind = 0; kind < 12; ++kind) {
+      for (int y = 0; y < p.window_height; ++y) {
+        for (int x = 0; x < p.window_width; ++x) {
+          const int ramp = (kind * 7 + x * (kind % 5 - 2) + y * (kind % 3 - 1) * 3) & 255;
+          const int value = kind < 6 ? static_cast<int>(g.below(256)) : kind < 11 ? ramp : 90;
+          patch[static_cast<std::size_t>(y * p.window_width + x)] = static_cast<std::uint8_t>(value);
+        }
+      }
+      ASSERT_TRUE(hog.compute(patch, out));
+      for (const float f : out) {
+        hash ^= std::bit_cast<std::uint32_t>(f);
+        hash *= 1099511628211ULL;
+      }
+    }
+  }
+  EXPECT_EQ(hash, 0x2de9e4aad7852e37ULL) << std::hex << hash;
+}
+
 TEST(Resample, IdentityAndClampAndSmoothing) {
   // A horizontal ramp, 64×48 Gray8: at scale 1 the window is the frame's pixels.
   std::vector<std::uint8_t> img(64 * 48);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/horizon.hpp"
 
 namespace ringlet::vision {
@@ -13,6 +14,20 @@ namespace {
 // from the camera, or something standing.
 bool upright(const FieldLine& f, double max_slant) noexcept {
   return std::abs(f.image_end.u - f.image_start.u) <= max_slant * std::abs(f.image_end.v - f.image_start.v);
+}
+
+// How many robot windows fit in the modelled budget after the work counted so far (at most
+// `wanted`): the model's own sum, so the frame's modelled cost never exceeds the budget on their
+// account.
+int robot_windows_within(const WorkCount& spent, hal::Nanos model_budget, int wanted) noexcept {
+  WorkCount with = spent;
+  int fit = 0;
+  while (fit < wanted) {
+    with.robot_windows = fit + 1;
+    if (modelled_cost(with) > model_budget) break;
+    ++fit;
+  }
+  return fit;
 }
 
 }  // namespace
@@ -165,19 +180,19 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     lap(Stage::kBall);
   }
   // The robot stage needs its classifier: unverified candidates (tall non-field runs) were robots
-  // at precision 0.089 on the seed-303 test set, not worth their ~0.2 ms on the board.
+  // at precision 0.089 on the seed-303 test set, not worth their ~0.2 ms on the board. Here the
+  // candidates; their classification comes last (below).
+  bool robots_proposed = false;
   if (classified && config_.robots && robot_svm_ && may_run(Stage::kRobots)) {
     // Robot columns twice as far apart as the ball's seeds: a NAO is ~27 px wide even 6 m away,
     // so 8 px columns still cross it three times, at half the scan's cost.
     const int robot_stride = 2 * level.ball_stride;
-    robots_.detect(classes_, frame, k, pose, robot_stride, robot_svm_ ? &*robot_svm_ : nullptr,
-                   level.robot_classify, deadline, r.robots);
-    r.cut.classifications_cut += r.robots.classifications_cut;
+    robots_.propose(classes_, k, pose, robot_stride, r.robots);
     // Columns every robot stride (rounded to the class step), every classified row.
     const int step = level.class_step;
     const int columns_stride = std::max(step, (std::max(robot_stride, 1) + step - 1) / step * step);
     r.work.robot_samples = ground_pixels / (static_cast<std::int64_t>(columns_stride) * step);
-    r.work.robot_windows = r.robots.classified;
+    robots_proposed = true;
     lap(Stage::kRobots);
   }
   bool scanned = false;
@@ -218,9 +233,6 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     r.cut.lines_not_extracted = lines.stats.stopped_early;
     r.cut.points_left = lines.stats.points_left;
     if (lines.stats.stopped_early) r.cut.deadline_hit = true;
-    const std::size_t reported = r.line_count;
-    r.line_count = drop_robot_legs(r.lines, r.line_count, r.robots, config_.robot_leg_max_slant);
-    r.robot_legs_dropped = static_cast<int>(reported - r.line_count);
     const std::size_t kept = r.line_count;
     r.line_count = drop_standing_objects(r.lines, r.line_count, frame, config_.robot_leg_max_slant, config_.standing_reach_px);
     r.standing_dropped = static_cast<int>(kept - r.line_count);
@@ -231,6 +243,23 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     r.work.point_tests += r.marks.tests;
     if (r.marks.stopped_early) r.cut.deadline_hit = true;
     lap(Stage::kRansac);
+  }
+  // The robot classifications last: they are what a short frame gives up first, whether the clock
+  // runs out (the deadline is checked before each window) or, in lockstep, the modelled budget,
+  // which everything else has already been counted against. Then the legs of the robots found
+  // are taken out of the lines (a filter of each line on its own: its place after the marks
+  // changes which lines remain only in that the marks still saw them).
+  if (robots_proposed) {
+    const hal::Nanos started = deadline.now();
+    const int windows = robot_windows_within(r.work, deadline.model_budget, level.robot_classify);
+    robots_.report(frame, k, pose, &*robot_svm_, level.robot_classify, windows, deadline, r.robots);
+    r.cut.classifications_cut += r.robots.classifications_cut;
+    if (r.robots.classifications_cut > 0) r.cut.deadline_hit = true;
+    r.work.robot_windows = r.robots.classified;
+    const std::size_t reported = r.line_count;
+    r.line_count = drop_robot_legs(r.lines, r.line_count, r.robots, config_.robot_leg_max_slant);
+    r.robot_legs_dropped = static_cast<int>(reported - r.line_count);
+    r.stage_time[static_cast<std::size_t>(Stage::kRobots)] += deadline.now() - started;
   }
   if (!classified) {  // later stages depend on the classes
     for (const Stage s : {Stage::kBall, Stage::kRobots, Stage::kScan, Stage::kCircle, Stage::kRansac}) {

@@ -38,6 +38,12 @@ RobotBox robot_box(const RobotCandidate& c, int step, const RobotParams& params)
 void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
                            const hal::CameraPose& pose, int stride, HogClassifier* classifier, int max_verified,
                            const Deadline& deadline, RobotList& out) noexcept {
+  propose(classes, k, pose, stride, out);
+  report(frame, k, pose, classifier, max_verified, max_verified, deadline, out);
+}
+
+void RobotDetector::propose(const ClassImage& classes, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+                            int stride, RobotList& out) noexcept {
   out = RobotList{};
   count_ = 0;
   const int s = classes.step();
@@ -306,7 +312,12 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     for (; j > 0 && nearer(c, cands_[j - 1]); --j) cands_[j] = cands_[j - 1];
     cands_[j] = c;
   }
+}
 
+void RobotDetector::report(const hal::FrameView& frame, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+                           HogClassifier* classifier, int max_verified, int windows_allowed, const Deadline& deadline,
+                           RobotList& out) noexcept {
+  const int s = step_;
   const bool use_classifier = classifier != nullptr && max_verified > 0;
   const std::size_t n = use_classifier ? std::min(count_, static_cast<std::size_t>(max_verified)) : count_;
   for (std::size_t i = 0; i < n && out.count < kMaxRobots; ++i) {
@@ -330,7 +341,7 @@ void RobotDetector::detect(const ClassImage& classes, const hal::FrameView& fram
     r.distance_m = hal::portable_hypot(r.ground.x, r.ground.y);
     r.bearing_rad = std::atan2(r.ground.y, r.ground.x);
     if (use_classifier) {
-      if (deadline.expired()) {
+      if (deadline.expired() || out.classified >= windows_allowed) {
         out.classifications_cut = static_cast<int>(n - i);
         break;
       }

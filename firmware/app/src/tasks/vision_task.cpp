@@ -94,10 +94,13 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   if (have_frame_ && frame.sequence > last_sequence_ + 1) stats_.missed_frames += frame.sequence - last_sequence_ - 1;
   have_frame_ = true;
   last_sequence_ = frame.sequence;
-  const vision::Deadline deadline =
+  vision::Deadline deadline =
       deadline_ == VisionDeadline::kNone
           ? vision::Deadline{}
           : vision::Deadline::after(*ctx.stopwatch, ctx.time_left(), deadline_ == VisionDeadline::kCpu);
+  // Lockstep judges the budget on the modelled cost (run() reports it below): the pipeline fits
+  // what it can cut, the robot classifications, to that instead of to a clock.
+  if (deadline_ == VisionDeadline::kNone) deadline.model_budget = ctx.budget - kNoFrameCost;
   const vision::VisionResult& r = pipeline_->process(frame, posture_at(frame.capture_time), deadline, ctx.degrade_level);
   ++stats_.frames;
   cost_ = kNoFrameCost + vision::modelled_cost(r.work);

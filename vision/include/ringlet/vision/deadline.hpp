@@ -12,6 +12,10 @@ struct Deadline {
   const hal::Stopwatch* watch = nullptr;
   hal::Nanos end{std::numeric_limits<hal::Nanos::rep>::max()};
   bool cpu = false;  // judge on the thread's CPU time instead of wall time (as the executive can)
+  // The modelled board time (cost_model.hpp's default model) the frame may take: in lockstep
+  // simulation the executive judges the budget on that model, not on a clock, so the pipeline
+  // counts its work against it where it can cut (the robot classifications, which run last).
+  hal::Nanos model_budget{std::numeric_limits<hal::Nanos::rep>::max()};
 
   /// `budget` from now on `watch`.
   [[nodiscard]] static Deadline after(const hal::Stopwatch& w, hal::Nanos budget, bool use_cpu = false) noexcept {

@@ -62,14 +62,21 @@ class HogExtractor {
   bool compute(std::span<const std::uint8_t> patch, std::span<float> out) noexcept;
 
  private:
-  struct PixelWeights {  // one pixel's votes inside a block: cells (x, y) ∈ {0, 1}² of the 2×2 nearest
-    std::int16_t cell[4];  // cell index inside the block (column-major), −1: no vote
-    float weight[4];       // bilinear cell weight × Gaussian
+  // The block weight of a pixel (bilinear cell weight × Gaussian) is a product of a column and a
+  // row factor, so a block's cell histograms are built in two passes: each window row's votes
+  // into the cell columns of a block column (`row_hist_`, shared by the vertically overlapping
+  // blocks), then those rows weighted into the cells. A tenth of the scattered adds of voting
+  // every pixel into every block it lies in.
+  struct AxisVote {  // one block-relative pixel column (or row): the ≤ 2 nearest cells' weights
+    int cell[2];     // cell column (or row) inside the block, −1: no vote
+    float weight[2];  // linear cell weight × the Gaussian's factor along this axis
   };
   HogParams params_;
-  std::vector<PixelWeights> block_weights_;  // block_px² entries
-  std::vector<float> magnitude_[2];          // per window pixel: magnitude share of the lower and the upper bin
-  std::vector<std::uint8_t> bin_[2];         // per window pixel: lower and upper bin
+  std::vector<AxisVote> axis_votes_;           // block side (px) entries; the same along x and y
+  std::vector<float> magnitude_[2];            // per window pixel: magnitude share of the lower and the upper bin
+  std::vector<std::int32_t> bin_[2];           // per window pixel: lower and upper bin
+  std::vector<float> grad_[2];                 // one row's dx and dy
+  std::vector<float> row_hist_;                // window rows × block cells along x × bins
 };
 
 }  // namespace ringlet::vision

@@ -120,9 +120,23 @@ class RobotDetector {
  public:
   explicit RobotDetector(const RobotParams& params) : params_(params) {}
 
+  /// propose() then report(): the candidates, verified by `classifier` when there is one.
   void detect(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
               const hal::CameraPose& pose, int stride, HogClassifier* classifier, int max_verified,
               const Deadline& deadline, RobotList& out) noexcept;
+
+  /// The candidate scan alone (columns every `stride` px): `out` is cleared and gets the
+  /// candidate count; the candidates wait, nearest first, for report().
+  void propose(const ClassImage& classes, const hal::CameraIntrinsics& k, const hal::CameraPose& pose, int stride,
+               RobotList& out) noexcept;
+
+  /// The last propose()'s candidates into `out.robots`, nearest first. With a classifier, at most
+  /// `max_verified` windows are classified, none once `deadline` has passed or `windows_allowed`
+  /// have been (the pipeline's share of a modelled budget); those left out count in
+  /// `classifications_cut`. Without one, the candidates are reported unverified.
+  void report(const hal::FrameView& frame, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+              HogClassifier* classifier, int max_verified, int windows_allowed, const Deadline& deadline,
+              RobotList& out) noexcept;
 
   /// The image height (px) of a standing robot whose feet are at ground point `g`; 0 when it
   /// cannot be projected.
