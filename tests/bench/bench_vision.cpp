@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ringlet/vision/ball.hpp"
+#include "ringlet/vision/bw_ball.hpp"
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/hog_svm.hpp"
 #include "ringlet/vision/horizon.hpp"
@@ -191,6 +192,46 @@ void BM_Ball(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(detector.detect(classes, f.cam.k, f.pose));
 }
 BENCHMARK(BM_Ball)->Unit(benchmark::kMicrosecond);
+
+// The black-and-white ball's candidates (seeds every 4 px, the runs' extents, inner contrasts and
+// outlines; no classifier) on the same field with the SPL ball. `samples` is what the pipeline
+// counts as ball samples (the seeds plus the refinement's reads): the cost model's per-sample
+// row was measured on the orange ball (BM_Ball), and this shows whether it holds here.
+void BM_BwBall(benchmark::State& state) {
+  const Fixture& f = fixture();
+  testing::Scene scene = testing::field_scene();
+  scene.ball_black_white = true;
+  static const testing::Frame frame = testing::render(scene, f.cam, hal::PixelFormat::kYuyv);
+  ClassImage classes(640, 480);
+  classes.classify(frame.view, f.table, f.first, 1);
+  BwBallDetector detector({});
+  BallList out;
+  for (auto _ : state) {
+    detector.detect(classes, frame.view, f.cam.k, f.pose, 4, nullptr, 0, {}, out);
+    benchmark::DoNotOptimize(out.count);
+  }
+  state.counters["samples"] = static_cast<double>(640 * (480 - f.first) / 16 + out.refine_samples);
+  state.counters["candidates"] = out.candidates;
+}
+BENCHMARK(BM_BwBall)->Unit(benchmark::kMicrosecond);
+
+// One expected ball radius (a pixel's ray to the ball's height above the ground): the black-and-
+// white ball's detector takes one at every non-field run's end and two or three per candidate it
+// considers. The cost model counts each as kRadiusSamples ball samples (bw_ball.hpp): this time
+// over BM_Ball's per sample (51 us / 18k) in the same run.
+void BM_BallRadius(benchmark::State& state) {
+  const Fixture& f = fixture();
+  const BwBallDetector detector({});
+  double sum = 0.0;
+  for (auto _ : state) {
+    for (int i = 0; i < 1000; ++i) {
+      sum += detector.expected_radius_px(f.cam.k, f.pose, {static_cast<double>(i % 640), 300.0 + static_cast<double>(i % 150)});
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["calls"] = 1000;
+}
+BENCHMARK(BM_BallRadius)->Unit(benchmark::kMicrosecond);
 
 // The robot candidate scan alone (no classifier): columns every 4 px, every classified row. The
 // cost model's per_robot_sample_ns is this time over the samples counter.

@@ -58,7 +58,8 @@ struct BallList {
   int candidates = 0;      // after merging
   int classified = 0;      // candidates given to the SVM
   int classifications_cut = 0;  // candidates not classified because the deadline passed
-  int refine_samples = 0;  // class-image and luminance samples the outlines and contrasts read (cost model)
+  int refine_samples = 0;  // class-image and luminance samples the outlines, extents and contrasts read, and
+                           // the expected radii taken, in sample equivalents (cost model)
 };
 
 /// A ball candidate before verification.
