@@ -12,6 +12,7 @@
 #include "ringlet/vision/hog_svm.hpp"
 #include "ringlet/vision/horizon.hpp"
 #include "ringlet/vision/pipeline.hpp"
+#include "classify_everything.hpp"
 #include "synthetic_field.hpp"
 
 namespace {
@@ -266,13 +267,8 @@ BENCHMARK(BM_HogClassify)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 // (weights that accept every window, so every candidate the level allows is classified).
 void BM_PipelineHog(benchmark::State& state) {
   const Fixture& f = fixture();
-  VisionConfig config;
-  config.ball.mode = BallMode::kBlackWhite;
-  VisionPipeline pipeline(config, f.table);
-  for (const HogTarget t : {HogTarget::kBall, HogTarget::kRobot}) {
-    const HogParams p = t == HogTarget::kBall ? HogParams::ball() : HogParams::robot();
-    (void)pipeline.set_classifier(HogSvm(t, p, std::vector<float>(static_cast<std::size_t>(p.feature_length()), 0.01f), 0.0, -1e9));
-  }
+  const auto classifying = testing::pipeline_classifying_everything();
+  VisionPipeline& pipeline = *classifying;
   const int level = static_cast<int>(state.range(0));
   hal::FrameView view = f.yuyv.view;
   for (auto _ : state) {

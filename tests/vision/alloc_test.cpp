@@ -7,6 +7,7 @@
 
 #include "allocation_counter.hpp"
 #include "ringlet/vision/pipeline.hpp"
+#include "classify_everything.hpp"
 #include "synthetic_field.hpp"
 
 
@@ -45,18 +46,9 @@ TEST(VisionNoAllocation, ProcessAllocatesNothing) {
 // every window, so every candidate is resampled, described and scored), at every degrade level.
 TEST(VisionNoAllocation, HogStagesAllocateNothing) {
   testing::Camera cam;
-  testing::Scene scene = testing::field_scene();
-  scene.ball_black_white = true;
-  scene.blobs.push_back({{1.0, 0.5}, {1.3, 0.7}});  // a white blob: candidates for both detectors
-  const auto yuyv = testing::render(scene, cam, hal::PixelFormat::kYuyv);
-  VisionConfig config;
-  config.ball.mode = BallMode::kBlackWhite;
-  VisionPipeline p(config, ColourTable::from_thresholds({}));
-  const auto accept_all = [](HogTarget t, const HogParams& hog) {
-    return HogSvm(t, hog, std::vector<float>(static_cast<std::size_t>(hog.feature_length()), 0.01f), 0.0, -1e9);
-  };
-  ASSERT_EQ(p.set_classifier(accept_all(HogTarget::kBall, HogParams::ball())), "");
-  ASSERT_EQ(p.set_classifier(accept_all(HogTarget::kRobot, HogParams::robot())), "");
+  const auto yuyv = testing::render(testing::classifier_scene(), cam, hal::PixelFormat::kYuyv);
+  const auto pipeline = testing::pipeline_classifying_everything();
+  VisionPipeline& p = *pipeline;
   StepWatch watch;
   const std::uint64_t before = ringlet::test::allocations();
   int classified = 0;

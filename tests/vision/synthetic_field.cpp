@@ -129,4 +129,11 @@ Scene field_scene() {
   return s;
 }
 
+Scene classifier_scene() {
+  Scene s = field_scene();
+  s.ball_black_white = true;
+  s.blobs.push_back({{1.0, 0.5}, {1.3, 0.7}});
+  return s;
+}
+
 }  // namespace ringlet::vision::testing

@@ -65,4 +65,8 @@ struct Camera {
 /// A typical view of a field: the halfway line, a touch line, the centre circle and the ball.
 [[nodiscard]] Scene field_scene();
 
+/// field_scene() with the black-and-white ball and a white blob: candidates for both HOG
+/// classifiers (the ball's and the robots').
+[[nodiscard]] Scene classifier_scene();
+
 }  // namespace ringlet::vision::testing

@@ -178,6 +178,30 @@ void BwBallDetector::add(const Candidate& c) noexcept {
 void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
                             const hal::CameraPose& pose, int stride, HogClassifier* classifier, int max_verified,
                             const Deadline& deadline, BallList& out) noexcept {
+  const bool verifying = classifier != nullptr && max_verified > 0;
+  propose(classes, frame, k, pose, stride, verifying, out);
+  if (verifying) verify(frame, k, pose, *classifier, max_verified, max_verified, deadline, out);
+}
+
+BallDetection BwBallDetector::detection(const Candidate& c, const hal::CameraIntrinsics& k,
+                                        const hal::CameraPose& pose) const noexcept {
+  BallDetection b;
+  b.seen = true;
+  b.centre = c.centre;
+  b.radius_px = c.radius;
+  b.pixels = static_cast<int>(3.14159265358979 * c.radius * c.radius);
+  hal::RobotPoint g{};
+  if (expected_radius_px(k, pose, c.centre, &g) > 0.0) {
+    b.ground = g;
+    b.ground_valid = true;
+    b.distance_m = hal::portable_hypot(g.x, g.y);
+    b.bearing_rad = std::atan2(g.y, g.x);
+  }
+  return b;
+}
+
+void BwBallDetector::propose(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
+                             const hal::CameraPose& pose, int stride, bool to_be_verified, BallList& out) noexcept {
   out = BallList{};
   count_ = 0;
   refine_samples_ = 0;
@@ -274,44 +298,30 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
     cands_[j] = c;
   }
 
-  const auto fill = [&](const Candidate& c, BallDetection& b) {
-    b.seen = true;
-    b.centre = c.centre;
-    b.radius_px = c.radius;
-    b.pixels = static_cast<int>(3.14159265358979 * c.radius * c.radius);
-    hal::RobotPoint g{};
-    if (expected_radius_px(k, pose, c.centre, &g) > 0.0) {
-      b.ground = g;
-      b.ground_valid = true;
-      b.distance_m = hal::portable_hypot(g.x, g.y);
-      b.bearing_rad = std::atan2(g.y, g.x);
-    }
-  };
-
-  const bool use_classifier = classifier != nullptr && max_verified > 0;
-  if (!use_classifier) {
-    if (count_ > 0) {
-      BallDetection& b = out.balls[0];
-      fill(cands_[0], b);
-      b.confidence = 0.3 * std::min(1.0, cands_[0].rank());
-      out.count = 1;
-    }
-    return;
+  if (!to_be_verified && count_ > 0) {
+    BallDetection& b = out.balls[0];
+    b = detection(cands_[0], k, pose);
+    b.confidence = 0.3 * std::min(1.0, cands_[0].rank());
+    out.count = 1;
   }
-  const double threshold = classifier->model().threshold();
-  const std::size_t n = std::min(count_, static_cast<std::size_t>(max_verified));
+}
+
+void BwBallDetector::verify(const hal::FrameView& frame, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+                            HogClassifier& classifier, int max_verified, int windows_allowed, const Deadline& deadline,
+                            BallList& out) noexcept {
+  const double threshold = classifier.model().threshold();
+  const std::size_t n = std::min(count_, static_cast<std::size_t>(std::max(max_verified, 0)));
   for (std::size_t i = 0; i < n; ++i) {
-    if (deadline.expired()) {
+    if (deadline.expired() || out.classified >= windows_allowed) {
       out.classifications_cut = static_cast<int>(n - i);
       break;
     }
     const Candidate& c = cands_[i];
-    const WindowPlacement w = ball_window(params_, classifier->model().params(), c.centre, c.radius);
-    const double score = classifier->score_window(frame, w.left, w.top, w.scale);
+    const WindowPlacement w = ball_window(params_, classifier.model().params(), c.centre, c.radius);
+    const double score = classifier.score_window(frame, w.left, w.top, w.scale);
     ++out.classified;
     if (score < threshold) continue;
-    BallDetection b;
-    fill(c, b);
+    BallDetection b = detection(c, k, pose);
     b.verified = true;
     b.score = score;
     b.confidence = svm_confidence(score, threshold);

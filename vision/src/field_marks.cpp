@@ -34,6 +34,8 @@ constexpr std::array<std::array<double, 2>, kOrientations> kDirections{{
     {0.08715574274765814, 0.9961946980917455},
 }};
 constexpr int kRingSamples = 12;  // every 30°
+// The most tests judge() counts: the ring, two circles of 72 samples, the cross's 13 points.
+constexpr std::int64_t kJudgeTests = kRingSamples + 2 * 72 + 13;
 
 struct Direction {
   double c;
@@ -154,14 +156,19 @@ bool FieldMarkFinder::judge(const hal::RobotPoint& c, const ClassImage& classes,
 void FieldMarkFinder::find(std::span<const CandidatePoint> candidates, std::span<const FieldLine> lines,
                            const CentreCircle& circle, std::span<const BallDetection> balls, const ClassImage& classes,
                            const hal::CameraIntrinsics& k, const hal::CameraPose& pose, const Deadline& deadline,
-                           FieldMarkList& out) noexcept {
+                           FieldMarkList& out, std::int64_t max_tests) noexcept {
   out = FieldMarkList{};
   if (!params_.enabled) return;
   // 1. What the lines, the circle and the balls leave over, near enough.
   left_.clear();
   const double max_range2 = params_.max_range_m * params_.max_range_m;
+  const auto line_tests = static_cast<std::int64_t>(lines.size());
   for (const CandidatePoint& cp : candidates) {
     if (left_.size() == limit_) break;
+    if (out.tests + line_tests > max_tests) {  // a candidate tests at most every line
+      out.stopped_early = true;
+      return;
+    }
     const hal::RobotPoint& q = cp.ground;
     if (q.x * q.x + q.y * q.y > max_range2) continue;
     bool claimed = false;
@@ -188,7 +195,8 @@ void FieldMarkFinder::find(std::span<const CandidatePoint> candidates, std::span
   // 2. Lone clusters, in candidate order (the scan's, so deterministic), each judged in the picture.
   for (std::size_t i = 0; i < left_.size() && out.count < kMaxFieldMarks; ++i) {
     if (taken_[i] != 0) continue;
-    if (deadline.expired()) {
+    if (deadline.expired() ||
+        out.tests + 3 * static_cast<std::int64_t>(left_.size()) + kJudgeTests > max_tests) {
       out.stopped_early = true;
       break;
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "ringlet/vision/cost_model.hpp"
@@ -16,18 +17,27 @@ bool upright(const FieldLine& f, double max_slant) noexcept {
   return std::abs(f.image_end.u - f.image_start.u) <= max_slant * std::abs(f.image_end.v - f.image_start.v);
 }
 
-// How many robot windows fit in the modelled budget after the work counted so far (at most
-// `wanted`): the model's own sum, so the frame's modelled cost never exceeds the budget on their
-// account.
-int robot_windows_within(const WorkCount& spent, hal::Nanos model_budget, int wanted) noexcept {
-  WorkCount with = spent;
+// How many classifier windows fit in the modelled budget after the work counted in `spent` (at
+// most `wanted`): `windows` is the count in `spent` that the windows go into (its ball or robot
+// windows). The model's own sum, so the frame's modelled cost never exceeds the budget on their
+// account; with no budget (the default) every wanted window fits.
+int windows_within(WorkCount& spent, std::int64_t& windows, hal::Nanos model_budget, int wanted) noexcept {
   int fit = 0;
   while (fit < wanted) {
-    with.robot_windows = fit + 1;
-    if (modelled_cost(with) > model_budget) break;
+    windows = fit + 1;
+    if (modelled_cost(spent) > model_budget) break;
     ++fit;
   }
   return fit;
+}
+
+// How many more point tests the modelled budget leaves after `spent` (the marks' share).
+std::int64_t point_tests_within(const WorkCount& spent, hal::Nanos model_budget) noexcept {
+  if (model_budget == hal::Nanos::max()) return std::numeric_limits<std::int64_t>::max();
+  const CostModel model = default_cost_model();
+  const double left_ns = static_cast<double>((model_budget - modelled_cost(spent)).count()) - 2.0;  // rounding
+  const double per_test_ns = model.per_point_test_ns * model.board_slowdown;
+  return left_ns <= 0.0 ? 0 : static_cast<std::int64_t>(std::floor(left_ns / per_test_ns));
 }
 
 }  // namespace
@@ -161,13 +171,13 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     if (classified) r.work.classified_pixels = ground_pixels / (level.class_step * level.class_step);
     lap(Stage::kClassify);
   }
+  // The black-and-white ball's candidates here; their classification comes after the lines.
+  bool balls_to_verify = false;
   if (classified && may_run(Stage::kBall)) {
     if (config_.ball.mode == BallMode::kBlackWhite) {
-      bw_ball_.detect(classes_, frame, k, pose, level.ball_stride, ball_svm_ ? &*ball_svm_ : nullptr,
-                      level.ball_classify, deadline, r.balls);
+      balls_to_verify = ball_svm_.has_value() && level.ball_classify > 0;
+      bw_ball_.propose(classes_, frame, k, pose, level.ball_stride, balls_to_verify, r.balls);
       if (r.balls.count > 0) r.ball = r.balls.balls[0];
-      r.cut.classifications_cut += r.balls.classifications_cut;
-      r.work.ball_windows = r.balls.classified;
     } else {
       r.ball = ball_.detect(classes_, k, pose, level.ball_stride);
       if (r.ball.seen) {
@@ -196,6 +206,7 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     lap(Stage::kRobots);
   }
   bool scanned = false;
+  bool ransac_ran = false;
   if (classified && may_run(Stage::kScan)) {
     ScanParams scan = config_.scan;
     scan.stride = level.scan_stride;
@@ -236,13 +247,34 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     const std::size_t kept = r.line_count;
     r.line_count = drop_standing_objects(r.lines, r.line_count, frame, config_.robot_leg_max_slant, config_.standing_reach_px);
     r.standing_dropped = static_cast<int>(kept - r.line_count);
-    // The crosses from what the lines, the circle and the balls leave over (bounded, no trials).
+    ransac_ran = true;
+    lap(Stage::kRansac);
+  }
+  // The classifiers after the lines, so that a short frame gives them up first, whether the clock
+  // runs out (the deadline is checked before each window) or, in lockstep, the modelled budget,
+  // which everything before has been counted against. The ball's first: the marks keep clear of
+  // the verified balls.
+  if (balls_to_verify) {
+    const hal::Nanos started = deadline.now();
+    WorkCount spent = r.work;
+    const int windows = windows_within(spent, spent.ball_windows, deadline.model_budget, level.ball_classify);
+    bw_ball_.verify(frame, k, pose, *ball_svm_, level.ball_classify, windows, deadline, r.balls);
+    r.ball = r.balls.count > 0 ? r.balls.balls[0] : BallDetection{};
+    r.cut.classifications_cut += r.balls.classifications_cut;
+    if (r.balls.classifications_cut > 0) r.cut.deadline_hit = true;
+    r.work.ball_windows = r.balls.classified;
+    r.stage_time[static_cast<std::size_t>(Stage::kBall)] += deadline.now() - started;
+  }
+  // The crosses from what the lines, the circle and the balls leave over (bounded, no trials),
+  // within what the modelled budget leaves them.
+  if (ransac_ran) {
+    const hal::Nanos started = deadline.now();
     marks_.find(candidates_.points(), std::span<const FieldLine>(r.lines.data(), r.line_count), r.circle,
                 std::span<const BallDetection>(r.balls.balls.data(), r.balls.count), classes_, k, pose, deadline,
-                r.marks);
+                r.marks, point_tests_within(r.work, deadline.model_budget));
     r.work.point_tests += r.marks.tests;
     if (r.marks.stopped_early) r.cut.deadline_hit = true;
-    lap(Stage::kRansac);
+    r.stage_time[static_cast<std::size_t>(Stage::kRansac)] += deadline.now() - started;
   }
   // The robot classifications last: they are what a short frame gives up first, whether the clock
   // runs out (the deadline is checked before each window) or, in lockstep, the modelled budget,
@@ -251,7 +283,8 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
   // changes which lines remain only in that the marks still saw them).
   if (robots_proposed) {
     const hal::Nanos started = deadline.now();
-    const int windows = robot_windows_within(r.work, deadline.model_budget, level.robot_classify);
+    WorkCount spent = r.work;
+    const int windows = windows_within(spent, spent.robot_windows, deadline.model_budget, level.robot_classify);
     robots_.report(frame, k, pose, &*robot_svm_, level.robot_classify, windows, deadline, r.robots);
     r.cut.classifications_cut += r.robots.classifications_cut;
     if (r.robots.classifications_cut > 0) r.cut.deadline_hit = true;

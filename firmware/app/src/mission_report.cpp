@@ -288,7 +288,8 @@ nlohmann::json summary_json(const MissionSummary& s) {
   if (s.vision) {
     vision = {{"frames", s.vision->frames},       {"with_lines", s.vision->with_lines}, {"lines", s.vision->lines},
               {"with_ball", s.vision->with_ball}, {"cut", s.vision->cut},               {"degraded", s.vision->degraded},
-              {"bad_frames", s.vision->bad_frames}, {"missed_frames", s.vision->missed_frames}};
+              {"bad_frames", s.vision->bad_frames}, {"missed_frames", s.vision->missed_frames},
+              {"robots", s.vision->robots}};
   }
   return {{"backend", s.backend},
           {"world", s.world},

@@ -78,11 +78,25 @@ class BwBallDetector {
  public:
   explicit BwBallDetector(const BwBallParams& params) : params_(params) {}
 
-  /// `classifier` may be null; `max_verified` ≤ 0 also skips it. The deadline is checked before
-  /// every classification.
+  /// propose() then, with a classifier, verify(). `classifier` may be null; `max_verified` ≤ 0
+  /// also skips it. The deadline is checked before every classification.
   void detect(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
               const hal::CameraPose& pose, int stride, HogClassifier* classifier, int max_verified,
               const Deadline& deadline, BallList& out) noexcept;
+
+  /// The candidates (seeds every `stride` px), ranked; `out` is cleared and gets their count and
+  /// the samples read. Unless they are to be verified, the best is reported unverified
+  /// (confidence ≤ 0.3).
+  void propose(const ClassImage& classes, const hal::FrameView& frame, const hal::CameraIntrinsics& k,
+               const hal::CameraPose& pose, int stride, bool to_be_verified, BallList& out) noexcept;
+
+  /// The last propose()'s candidates classified in rank order: at most `max_verified` windows,
+  /// none once `deadline` has passed or `windows_allowed` have been (the pipeline's share of a
+  /// modelled budget); those left out count in `classifications_cut`. The verified balls go into
+  /// `out` by score.
+  void verify(const hal::FrameView& frame, const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
+              HogClassifier& classifier, int max_verified, int windows_allowed, const Deadline& deadline,
+              BallList& out) noexcept;
 
   /// The image radius (px) of a ball whose centre is seen through pixel `px`; 0 when the ray does
   /// not meet the ball plane (at or above the horizon of the plane z = R).
@@ -95,6 +109,9 @@ class BwBallDetector {
  private:
   using Candidate = BallCandidate;
   void add(const Candidate& c) noexcept;
+  /// A detection at candidate `c`, on the ground where it projects.
+  [[nodiscard]] BallDetection detection(const Candidate& c, const hal::CameraIntrinsics& k,
+                                        const hal::CameraPose& pose) const noexcept;
   struct Outline {
     hal::Pixel centre{};     // of the circle of the given radius best fitting the outline
     double roundness = 0.0;  // 0 when too few rays end on the field (centre unchanged)

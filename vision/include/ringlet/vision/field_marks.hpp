@@ -21,6 +21,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -78,9 +79,14 @@ class FieldMarkFinder {
   /// Allocates its scratch for `capacity` candidates (max_points of them are ever used).
   FieldMarkFinder(const FieldMarkParams& params, std::size_t capacity);
 
+  /// The crosses among the candidates the lines, the circle and the balls leave over. It stops
+  /// (`out.stopped_early`) when `deadline` has passed before a cluster, or before a step whose
+  /// tests could take `out.tests` past `max_tests` (the pipeline's share of a modelled budget):
+  /// a candidate's at most one per line, a cluster's at most 3 × leftovers + a judgement's.
   void find(std::span<const CandidatePoint> candidates, std::span<const FieldLine> lines, const CentreCircle& circle,
             std::span<const BallDetection> balls, const ClassImage& classes, const hal::CameraIntrinsics& k,
-            const hal::CameraPose& pose, const Deadline& deadline, FieldMarkList& out) noexcept;
+            const hal::CameraPose& pose, const Deadline& deadline, FieldMarkList& out,
+            std::int64_t max_tests = std::numeric_limits<std::int64_t>::max()) noexcept;
 
   /// The two bars of `mark` as ground segments (for drawing and scoring).
   [[nodiscard]] static std::array<std::array<hal::RobotPoint, 2>, 2> bars(const FieldMark& mark,
