@@ -18,13 +18,13 @@ bool upright(const FieldLine& f, double max_slant) noexcept {
 }
 
 // How many classifier windows fit in the modelled budget after the work counted in `spent` (at
-// most `wanted`): `windows` is the count in `spent` that the windows go into (its ball or robot
-// windows). The model's own sum, so the frame's modelled cost never exceeds the budget on their
-// account; with no budget (the default) every wanted window fits.
-int windows_within(WorkCount& spent, std::int64_t& windows, hal::Nanos model_budget, int wanted) noexcept {
+// most `wanted`), the windows counted in `spent.*windows` (its ball or robot windows). The
+// model's own sum, so the frame's modelled cost never exceeds the budget on their account; with
+// no budget (the default) every wanted window fits.
+int windows_within(WorkCount spent, std::int64_t WorkCount::*windows, hal::Nanos model_budget, int wanted) noexcept {
   int fit = 0;
   while (fit < wanted) {
-    windows = fit + 1;
+    spent.*windows = fit + 1;
     if (modelled_cost(spent) > model_budget) break;
     ++fit;
   }
@@ -256,8 +256,7 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
   // the verified balls.
   if (balls_to_verify) {
     const hal::Nanos started = deadline.now();
-    WorkCount spent = r.work;
-    const int windows = windows_within(spent, spent.ball_windows, deadline.model_budget, level.ball_classify);
+    const int windows = windows_within(r.work, &WorkCount::ball_windows, deadline.model_budget, level.ball_classify);
     bw_ball_.verify(frame, k, pose, *ball_svm_, level.ball_classify, windows, deadline, r.balls);
     r.ball = r.balls.count > 0 ? r.balls.balls[0] : BallDetection{};
     r.cut.classifications_cut += r.balls.classifications_cut;
@@ -283,8 +282,7 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
   // changes which lines remain only in that the marks still saw them).
   if (robots_proposed) {
     const hal::Nanos started = deadline.now();
-    WorkCount spent = r.work;
-    const int windows = windows_within(spent, spent.robot_windows, deadline.model_budget, level.robot_classify);
+    const int windows = windows_within(r.work, &WorkCount::robot_windows, deadline.model_budget, level.robot_classify);
     robots_.report(frame, k, pose, &*robot_svm_, level.robot_classify, windows, deadline, r.robots);
     r.cut.classifications_cut += r.robots.classifications_cut;
     if (r.robots.classifications_cut > 0) r.cut.deadline_hit = true;
