@@ -37,6 +37,40 @@ TEST(BwBall, ExpectedRadiusIsFocalLengthTimesRadiusOverDepth) {
   EXPECT_EQ(d.expected_radius_px(cam.k, pose, {320, 0}), 0.0);
 }
 
+// BallPlane's closed form (the rotation's bottom row, |ray| = |n|) against the ray through the
+// camera's rotation, on tilted bodies and turned heads where every entry of the rotation counts.
+TEST(BwBall, TheBallPlaneGivesTheRaysRadiusAndGroundPoint) {
+  Camera cam;
+  const double R = BwBallParams{}.radius_m;
+  int compared = 0;
+  for (const hal::BodyTilt body : {hal::BodyTilt{}, hal::BodyTilt{0.09, -0.05}, hal::BodyTilt{-0.03, 0.12}}) {
+    for (const hal::HeadJoints head : {hal::HeadJoints{0.0, 0.35}, hal::HeadJoints{0.7, 0.1}, hal::HeadJoints{-1.2, 0.45}}) {
+      const hal::CameraPose pose = hal::CameraPose::from_body(cam.mount, body, head);
+      const BallPlane plane(cam.k, pose, R);
+      for (int v = 0; v < cam.k.height; v += 37) {
+        for (int u = 0; u < cam.k.width; u += 41) {
+          const hal::Pixel px{u + 0.5, v + 0.5};
+          const hal::Vec3 ray = hal::pixel_ray(cam.k, pose, px);
+          hal::RobotPoint g{};
+          const bool meets = plane.ground(px, g);
+          ASSERT_EQ(meets, ray.z < -1e-12) << u << "," << v;
+          if (!meets) {
+            EXPECT_EQ(plane.radius_px(px), 0.0);
+            continue;
+          }
+          const double t = (R - pose.position.z) / ray.z;
+          const double depth = t * std::sqrt(ray.x * ray.x + ray.y * ray.y + ray.z * ray.z);
+          EXPECT_NEAR(plane.radius_px(px), cam.k.fx * R / depth, 1e-9 * cam.k.fx * R / depth);
+          EXPECT_NEAR(g.x, pose.position.x + t * ray.x, 1e-9 * std::max(1.0, std::abs(g.x)));
+          EXPECT_NEAR(g.y, pose.position.y + t * ray.y, 1e-9 * std::max(1.0, std::abs(g.y)));
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 500);
+}
+
 // Renders `scene` (YUYV), classifies it with the default table and runs the detector unverified
 // at ball stride 4.
 void detect_unverified(const testing::Scene& scene, const Camera& cam, BwBallDetector& d, BallList& out) {

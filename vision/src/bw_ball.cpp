@@ -12,11 +12,11 @@ namespace {
 
 bool non_field(const ClassImage& c, int x, int y) noexcept { return c.at(x, y) != ColourClass::kField; }
 
-// One expected radius (a pixel's ray to the ball's height) costs about as much as this many ball
-// samples: BM_BallRadius over BM_Ball's per-sample time in the same run (34.4 ns against
-// 85.3 us / 18k = 4.7 ns). The detector takes one at every non-field run's end, so on a cluttered
-// frame they were most of the stage's uncounted time.
-constexpr long kRadiusSamples = 7;
+// One expected radius (BallPlane::radius_px) costs about as much as this many ball samples:
+// BM_BallRadius over BM_Ball's per-sample time in the same run (9.3 ns against 76.4 us / 18k =
+// 4.2 ns; through a ray per call, before BallPlane, 34.4 ns against 4.7 ns, counted as 7). The
+// detector takes one at every non-field run's end.
+constexpr long kRadiusSamples = 2;
 
 // From sampled row y (on column x), the first and last sampled rows of the non-field run through
 // it, at most `reach` px away each way; [top, bottom] inclusive. Returns the samples read.
@@ -63,14 +63,43 @@ WindowPlacement ball_window(const BwBallParams& p, const HogParams& hog, const h
   return {centre.u - 0.5 * side, centre.v - 0.5 * side, side / static_cast<double>(hog.window_width)};
 }
 
+BallPlane::BallPlane(const hal::CameraIntrinsics& k, const hal::CameraPose& pose, double radius_m) noexcept
+    : pose_(pose),
+      cx_(k.cx),
+      cy_(k.cy),
+      inv_fx_(1.0 / k.fx),
+      inv_fy_(1.0 / k.fy),
+      height_(radius_m - pose.position.z),
+      scale_(k.fx * radius_m / (radius_m - pose.position.z)),
+      max_radius_(k.fx * radius_m / 1e-6),
+      above_(pose.position.z > radius_m) {}
+
+hal::Vec3 BallPlane::normalised(const hal::Pixel& px) const noexcept {
+  return {(px.u - cx_) * inv_fx_, (px.v - cy_) * inv_fy_, 1.0};
+}
+
+double BallPlane::radius_px(const hal::Pixel& px) const noexcept {
+  const hal::Vec3 n = normalised(px);
+  const auto& a = pose_.axes;
+  const double ray_z = a[0].z * n.x + a[1].z * n.y + a[2].z;
+  if (!(ray_z < -1e-12) || !above_) return 0.0;
+  // fx·R / depth with depth = (R − z)·|n| / ray_z; both signs negative.
+  return std::min(scale_ * ray_z / std::sqrt(n.x * n.x + n.y * n.y + 1.0), max_radius_);
+}
+
+bool BallPlane::ground(const hal::Pixel& px, hal::RobotPoint& at) const noexcept {
+  const hal::Vec3 ray = pose_.to_robot_direction(normalised(px));
+  if (!(ray.z < -1e-12) || !above_) return false;
+  const double t = height_ / ray.z;
+  at = {pose_.position.x + t * ray.x, pose_.position.y + t * ray.y};
+  return true;
+}
+
 double BwBallDetector::expected_radius_px(const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
                                           const hal::Pixel& px, hal::RobotPoint* ground) const noexcept {
-  const hal::Vec3 ray = hal::pixel_ray(k, pose, px);
-  if (!(ray.z < -1e-12) || pose.position.z <= params_.radius_m) return 0.0;
-  const double t = (params_.radius_m - pose.position.z) / ray.z;
-  const double depth = t * std::sqrt(ray.x * ray.x + ray.y * ray.y + ray.z * ray.z);  // (3-argument hypot is slow)
-  if (ground != nullptr) *ground = {pose.position.x + t * ray.x, pose.position.y + t * ray.y};
-  return k.fx * params_.radius_m / std::max(depth, 1e-6);
+  const BallPlane plane(k, pose, params_.radius_m);
+  if (ground != nullptr) static_cast<void>(plane.ground(px, *ground));
+  return plane.radius_px(px);
 }
 
 BwBallDetector::Outline BwBallDetector::fit_outline(const ClassImage& classes, const hal::Pixel& centre, double radius) noexcept {
@@ -89,7 +118,10 @@ BwBallDetector::Outline BwBallDetector::fit_outline(const ClassImage& classes, c
   int cx = 0, cy = 0;
   if (!grid(centre.u, centre.v, cx, cy) || !non_field(classes, cx, cy)) return {centre, 0.0};
   const double reach = params_.max_extent * radius;
-  const double step = 0.5 * s;  // half a sample: diagonal rays then see the outline more finely
+  // Half a sample (diagonal rays then see the outline more finely), but no finer than a
+  // sixteenth of the radius: a near ball's outline needs no more points along its rays than a far
+  // one's, and at 40 px its 16 rays would otherwise read 2000 samples.
+  const double step = std::max(0.5 * s, radius / 16.0);
   std::size_t n = 0;
   for (const auto& d : kRays) {
     bool field_before = false;
@@ -183,15 +215,14 @@ void BwBallDetector::detect(const ClassImage& classes, const hal::FrameView& fra
   if (verifying) verify(frame, k, pose, *classifier, max_verified, max_verified, deadline, out);
 }
 
-BallDetection BwBallDetector::detection(const Candidate& c, const hal::CameraIntrinsics& k,
-                                        const hal::CameraPose& pose) const noexcept {
+BallDetection BwBallDetector::detection(const Candidate& c, const BallPlane& plane) noexcept {
   BallDetection b;
   b.seen = true;
   b.centre = c.centre;
   b.radius_px = c.radius;
   b.pixels = static_cast<int>(3.14159265358979 * c.radius * c.radius);
   hal::RobotPoint g{};
-  if (expected_radius_px(k, pose, c.centre, &g) > 0.0) {
+  if (plane.ground(c.centre, g)) {
     b.ground = g;
     b.ground_valid = true;
     b.distance_m = hal::portable_hypot(g.x, g.y);
@@ -204,14 +235,16 @@ void BwBallDetector::propose(const ClassImage& classes, const hal::FrameView& fr
                              const hal::CameraPose& pose, int stride, bool to_be_verified, BallList& out) noexcept {
   out = BallList{};
   count_ = 0;
+  failed_count_ = 0;
   refine_samples_ = 0;
   const int s = classes.step();
   const int col_stride = std::max(s, (std::max(stride, 1) + s - 1) / s * s);
   const int first = classes.first_row();
   const int h = classes.height();
+  const BallPlane plane(k, pose, params_.radius_m);
   const auto radius_at = [&](const hal::Pixel& px) {
     refine_samples_ += kRadiusSamples;
-    return expected_radius_px(k, pose, px);
+    return plane.radius_px(px);
   };
   const auto consider = [&](int x, double cy_guess) {
     const double r = radius_at({x + 0.5 * s, cy_guess});
@@ -241,14 +274,23 @@ void BwBallDetector::propose(const ClassImage& classes, const hal::FrameView& fr
     double r2 = radius_at({cx, cy});
     if (r2 < params_.min_radius_px) return;
     // The neighbouring columns of a blob already outlined give the same candidate: not refined again.
+    const auto near = [&](const hal::Pixel& o) { return std::abs(o.u - cx) <= 0.5 * r2 && std::abs(o.v - cy) <= 0.5 * r2; };
     for (std::size_t i = 0; i < count_; ++i) {
-      const Candidate& o = cands_[i];
-      if (o.roundness > 0.0 && std::abs(o.centre.u - cx) <= 0.5 * r2 && std::abs(o.centre.v - cy) <= 0.5 * r2) return;
+      if (cands_[i].roundness > 0.0 && near(cands_[i].centre)) return;
     }
-    // Only a blob with black on white inside is worth its outline (the costly part).
+    // Only a blob with black on white inside is worth its outline (the costly part), and only once:
+    // where an outline failed, its neighbours' would too. (On a robot's white body with its dark
+    // joints every column's run passed the contrast test and walked the 16 rays again: 40k samples,
+    // twice the whole grid's, in a frame of the SPL run.)
     const double raw_contrast = inner_contrast(frame, {cx, cy}, r2);
     refine_samples_ += kContrastSamples;
-    const Outline outline = raw_contrast >= params_.min_contrast ? fit_outline(classes, {cx, cy}, r2) : Outline{{cx, cy}, 0.0};
+    const bool failed_here = std::any_of(failed_outlines_.begin(), failed_outlines_.begin() + static_cast<std::ptrdiff_t>(failed_count_),
+                                         [&](const hal::Pixel& o) { return std::abs(o.u - cx) <= r2 && std::abs(o.v - cy) <= r2; });
+    const bool outlining = raw_contrast >= params_.min_contrast && !failed_here;
+    const Outline outline = outlining ? fit_outline(classes, {cx, cy}, r2) : Outline{{cx, cy}, 0.0};
+    if (outlining && outline.roundness <= 0.0 && failed_count_ < failed_outlines_.size()) {
+      failed_outlines_[failed_count_++] = {cx, cy};
+    }
     const double r3 = radius_at(outline.centre);
     double contrast = raw_contrast;
     if (r3 >= params_.min_radius_px && (outline.centre.u != cx || outline.centre.v != cy)) {
@@ -300,7 +342,7 @@ void BwBallDetector::propose(const ClassImage& classes, const hal::FrameView& fr
 
   if (!to_be_verified && count_ > 0) {
     BallDetection& b = out.balls[0];
-    b = detection(cands_[0], k, pose);
+    b = detection(cands_[0], plane);
     b.confidence = 0.3 * std::min(1.0, cands_[0].rank());
     out.count = 1;
   }
@@ -310,6 +352,7 @@ void BwBallDetector::verify(const hal::FrameView& frame, const hal::CameraIntrin
                             HogClassifier& classifier, int max_verified, int windows_allowed, const Deadline& deadline,
                             BallList& out) noexcept {
   const double threshold = classifier.model().threshold();
+  const BallPlane plane(k, pose, params_.radius_m);
   const std::size_t n = std::min(count_, static_cast<std::size_t>(std::max(max_verified, 0)));
   for (std::size_t i = 0; i < n; ++i) {
     if (deadline.expired() || out.classified >= windows_allowed) {
@@ -321,7 +364,7 @@ void BwBallDetector::verify(const hal::FrameView& frame, const hal::CameraIntrin
     const double score = classifier.score_window(frame, w.left, w.top, w.scale);
     ++out.classified;
     if (score < threshold) continue;
-    BallDetection b = detection(c, k, pose);
+    BallDetection b = detection(c, plane);
     b.verified = true;
     b.score = score;
     b.confidence = svm_confidence(score, threshold);

@@ -13,7 +13,8 @@
 // along its row and column, then refined on its outline: 16 rays from the centre walk the class
 // image to the first two field samples; rays that end within `max_extent` × r give outline points
 // (rays running on into a line, a robot or the image's border give none), and a circle of the
-// expected radius is fitted to them (when ≥ `min_outline_points`). Candidates closer than r to a
+// expected radius is fitted to them (when ≥ `min_outline_points`). A blob within r of where an
+// outline failed this frame gets none (its neighbouring columns' would fail too). Candidates closer than r to a
 // better one are merged. They are ranked (BallCandidate::rank) by how well their extent matches
 // 2r, how round their outline is and, most, by the contrast inside: the black patches on white
 // that a robot's foot, a line crossing or a white blob lacks.
@@ -49,6 +50,32 @@ struct BwBallParams {
   double merge_radii = 1.0;        // candidates closer than this × r merge
   int min_outline_points = 6;      // of 16 rays, for the outline to re-centre a candidate
   double min_contrast = 0.3;       // less inside (no black on white): not re-centred, ranked low
+};
+
+/// Where viewing rays meet the plane of ball centres (z = R) for one camera pose: the image radius
+/// a ball seen through a pixel would have, r = fx·R / depth, and the ground point under it. Built
+/// once per frame: a pixel then costs a few products, a square root and a division instead of a
+/// ray through the camera rotation (the detector takes one at every non-field run's end). With
+/// n = ((u − cx)/fx, (v − cy)/fy, 1) the ray is A·n for the pose's rotation A, so |ray| = |n| and
+/// depth = (R − z)·|n| / (A·n)_z: only the rotation's bottom row is needed for the radius.
+class BallPlane {
+ public:
+  BallPlane(const hal::CameraIntrinsics& k, const hal::CameraPose& pose, double radius_m) noexcept;
+
+  /// 0 when the ray does not meet the plane (at or above its horizon, or a camera below it).
+  [[nodiscard]] double radius_px(const hal::Pixel& px) const noexcept;
+  /// The robot-frame ground point under the ball seen through `px`; false where radius_px is 0.
+  [[nodiscard]] bool ground(const hal::Pixel& px, hal::RobotPoint& at) const noexcept;
+
+ private:
+  hal::Vec3 normalised(const hal::Pixel& px) const noexcept;  // n above
+
+  hal::CameraPose pose_;
+  double cx_, cy_, inv_fx_, inv_fy_;
+  double height_;      // R − z: negative while the camera is above the plane
+  double scale_;       // fx·R / (R − z)
+  double max_radius_;  // fx·R / 1 µm: the depth is never taken as less
+  bool above_ = false; // the camera is above the plane
 };
 
 /// Up to kMaxBalls balls, best first, and what the detector did.
@@ -99,7 +126,7 @@ class BwBallDetector {
               BallList& out) noexcept;
 
   /// The image radius (px) of a ball whose centre is seen through pixel `px`; 0 when the ray does
-  /// not meet the ball plane (at or above the horizon of the plane z = R).
+  /// not meet the ball plane (at or above the horizon of the plane z = R). BallPlane's, for one pixel.
   [[nodiscard]] double expected_radius_px(const hal::CameraIntrinsics& k, const hal::CameraPose& pose,
                                           const hal::Pixel& px, hal::RobotPoint* ground = nullptr) const noexcept;
 
@@ -110,8 +137,7 @@ class BwBallDetector {
   using Candidate = BallCandidate;
   void add(const Candidate& c) noexcept;
   /// A detection at candidate `c`, on the ground where it projects.
-  [[nodiscard]] BallDetection detection(const Candidate& c, const hal::CameraIntrinsics& k,
-                                        const hal::CameraPose& pose) const noexcept;
+  [[nodiscard]] static BallDetection detection(const Candidate& c, const BallPlane& plane) noexcept;
   struct Outline {
     hal::Pixel centre{};     // of the circle of the given radius best fitting the outline
     double roundness = 0.0;  // 0 when too few rays end on the field (centre unchanged)
@@ -122,6 +148,8 @@ class BwBallDetector {
   std::array<Candidate, kMaxBallCandidates> cands_{};
   std::size_t count_ = 0;
   std::array<hal::RobotPoint, 16> outline_{};
+  std::array<hal::Pixel, kMaxBallCandidates> failed_outlines_{};  // where this frame's outlines failed
+  std::size_t failed_count_ = 0;
   long refine_samples_ = 0;
 };
 
