@@ -115,6 +115,32 @@ TEST(ExecutivePolicy, DegradeOverrunDuringRecoveryRestartsTheCleanStreak) {
   EXPECT_EQ(levels, (std::vector<int>{0, 1, 1, 1, 2, 2, 2, 1, 1, 1, 0, 0}));
 }
 
+TEST(ExecutivePolicy, AnOverloadedTaskIsDegradedButNotCountedAsAnOverrun) {
+  // Activations 0 and 1 keep their budget only by cutting needed work (Task::overloaded): the
+  // degrade policy lowers the next activations' work as after an overrun, and recovers the same way.
+  Rig rig;
+  auto& t = rig.add(spec("anytime", 1, 0, 2ms, OverrunPolicy::kDegrade), 1ms);
+  t.overloaded_by_activation([](std::size_t n) { return n < 2; });
+  auto& warned = rig.add(spec("warned", 1, 0, 2ms, OverrunPolicy::kWarn), 1ms);
+  warned.overloaded_by_activation([](std::size_t n) { return n < 2; });
+  ExecutiveConfig cfg;
+  cfg.degrade_recover_after = 3;
+  auto& exec = rig.build(cfg);
+  exec.run(10);
+  std::vector<int> levels;
+  for (const auto& ctx : t.activations()) levels.push_back(ctx.degrade_level);
+  EXPECT_EQ(levels, (std::vector<int>{0, 1, 2, 2, 2, 1, 1, 1, 0, 0}));
+  const auto stats = exec.task_stats();
+  EXPECT_EQ(stats[0].overruns, 0U);
+  EXPECT_EQ(stats[0].overloads, 2U);
+  EXPECT_EQ(stats[0].degraded_runs, 7U);
+  EXPECT_TRUE(of_kind(rig.drain(), EventKind::kOverrun).empty()) << "no overrun warning: the budget was kept";
+  // Another policy only counts it: nothing to lower.
+  EXPECT_EQ(stats[1].overloads, 2U);
+  EXPECT_EQ(stats[1].overruns, 0U);
+  EXPECT_EQ(stats[1].degraded_runs, 0U);
+}
+
 TEST(ExecutivePolicy, DegradeTellsTheTaskWhichCanRecoverByDoingLess) {
   // A task that does less when degraded: cost 3 ms at level 0 (over its 2 ms budget), 1 ms at >0.
   Rig rig;

@@ -93,6 +93,11 @@ class ScriptedTask final : public Task {
     model_by_activation_ = std::move(f);
     return *this;
   }
+  /// Whether the task reports itself overloaded (Task::overloaded) after each activation.
+  ScriptedTask& overloaded_by_activation(std::function<bool(std::size_t activation)> f) {
+    overloaded_by_activation_ = std::move(f);
+    return *this;
+  }
   /// Appends "label@frame" to a shared trace at every activation.
   ScriptedTask& trace_into(std::vector<std::string>* trace) {
     trace_ = trace;
@@ -112,8 +117,10 @@ class ScriptedTask final : public Task {
     }
     clock_.advance(cost);
     model_ = model_by_activation_ ? model_by_activation_(n) : Nanos{0};
+    overloaded_ = overloaded_by_activation_ && overloaded_by_activation_(n);
   }
   [[nodiscard]] Nanos modelled_cost() const noexcept override { return model_; }
+  [[nodiscard]] bool overloaded() const noexcept override { return overloaded_; }
 
   [[nodiscard]] const std::vector<TaskContext>& activations() const noexcept { return seen_; }
   [[nodiscard]] std::vector<std::uint64_t> frames() const {
@@ -132,6 +139,8 @@ class ScriptedTask final : public Task {
   std::function<Nanos(std::size_t)> by_activation_;
   std::function<Nanos(std::size_t)> model_by_activation_;
   Nanos model_{0};
+  std::function<bool(std::size_t)> overloaded_by_activation_;
+  bool overloaded_ = false;
   std::function<void(const TaskContext&)> hook_;
   std::vector<std::string>* trace_ = nullptr;
   std::vector<TaskContext> seen_;

@@ -188,6 +188,40 @@ TEST(Ransac, RespectsMaxTrialsAndSkip) {
   EXPECT_EQ(out.stats.lines_extracted, 1);
 }
 
+// The modelled budget's share (the pipeline's, in lockstep): no trial starts, and no second point
+// is drawn, past `max_point_tests` as the cost model counts them; exactly the whole run's count
+// changes nothing.
+TEST(Ransac, APointTestBudgetStopsTheTrialsWithinIt) {
+  SplitMix64 rng(5);
+  std::vector<CandidatePoint> pts;
+  add_line(pts, {2.0, -2.0}, {2.0, 2.0}, 400, rng);
+  add_line(pts, {0.8, 1.0}, {4.0, 1.0}, 300, rng);
+  add_outliers(pts, 100, rng);
+  const auto run_within = [&](std::int64_t budget) {
+    RansacLineFinder finder({}, 4096);
+    LineSet out;
+    finder.find(pts, 1, kK, kPose, {}, out, -1, -1, -1, 3, nullptr, nullptr, budget);
+    return out;
+  };
+  const auto tests = [](const LineSet& o) {
+    return static_cast<std::int64_t>(o.stats.trials_run) * o.stats.points_used + o.stats.partner_draws;
+  };
+  const LineSet full = run(pts, {});
+  ASSERT_GE(full.count, 2U);
+  ASSERT_FALSE(full.stats.stopped_early);
+  const LineSet same = run_within(tests(full));
+  EXPECT_FALSE(same.stats.stopped_early);
+  EXPECT_EQ(same.stats.trials_run, full.stats.trials_run);
+  EXPECT_EQ(same.count, full.count);
+  for (const std::int64_t budget : {tests(full) - 1, tests(full) / 2, std::int64_t{100}, std::int64_t{0}}) {
+    const LineSet cut = run_within(budget);
+    EXPECT_TRUE(cut.stats.stopped_early) << budget;
+    EXPECT_LE(tests(cut), budget);
+    EXPECT_LT(cut.stats.trials_run, full.stats.trials_run) << budget;
+  }
+  EXPECT_GE(run_within(tests(full) / 2).count, 1U) << "the first line's round fits in half";
+}
+
 TEST(Ransac, TheSampleIsNeverThinnerThanMinSamplePoints) {
   // 95 points with skip 10 would leave 10 for the trials; the sample keeps 40 at least, so the
   // step becomes 95 / 40 = 2 and 48 points are tried.

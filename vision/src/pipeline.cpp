@@ -232,7 +232,7 @@ const VisionResult& VisionPipeline::process(const hal::FrameView& frame, const h
     const CentreCircle known = r.circle;
     const LineCheck check(classes_, k, pose, config_.line_check);
     ransac_.find(candidates_.points(), frame.sequence, k, pose, deadline, lines, level.max_trials, level.max_lines,
-                 level.ransac_skip, level.scan_stride, &known, &check);
+                 level.ransac_skip, level.scan_stride, &known, &check, point_tests_within(r.work, deadline.model_budget));
     r.lines = lines.lines;
     r.line_count = lines.count;
     r.circle = lines.circle;

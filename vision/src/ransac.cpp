@@ -105,7 +105,7 @@ void RansacLineFinder::remove_from_pool(std::span<const int> members) noexcept {
 void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
                             const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials,
                             int max_lines, int skip_override, int scan_stride, const CentreCircle* circle,
-                            const LineCheck* check) noexcept {
+                            const LineCheck* check, std::int64_t max_point_tests) noexcept {
   out.count = 0;
   out.circle = circle != nullptr && circle->seen ? *circle : CentreCircle{};
   out.stats = RansacStats{};
@@ -157,7 +157,13 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
     Line2 best_line;
     int t = 0;
     for (; t < trials; ++t) {
-      if (deadline.expired()) {
+      // The point tests as the cost model counts them: the first round's sample per trial, and
+      // every draw of a second point. A trial starts only if it fits with one draw, and draws no
+      // more than fit.
+      const auto tests_with_another_draw = [&] {
+        return static_cast<std::int64_t>(st.trials_run) * st.points_used + st.partner_draws + 1;
+      };
+      if (deadline.expired() || tests_with_another_draw() + st.points_used > max_point_tests) {
         st.stopped_early = true;
         break;
       }
@@ -173,7 +179,7 @@ void RansacLineFinder::find(std::span<const CandidatePoint> candidates, std::uin
       // paint, about as often for a short line as for a long one. Else the last draw.
       int ib = ia;
       const int draws = has_direction(ia) && max_direction_tan_ >= 0.0 ? kPartnerDraws : 1;
-      for (int draw = 0; draw < draws; ++draw) {
+      for (int draw = 0; draw < draws && (draw == 0 || tests_with_another_draw() <= max_point_tests); ++draw) {
         auto j = static_cast<std::size_t>(rng.below(n - 1));
         if (j >= i) ++j;
         ib = s.sample_[j];

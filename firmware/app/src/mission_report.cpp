@@ -289,7 +289,8 @@ nlohmann::json summary_json(const MissionSummary& s) {
     vision = {{"frames", s.vision->frames},       {"with_lines", s.vision->with_lines}, {"lines", s.vision->lines},
               {"with_ball", s.vision->with_ball}, {"cut", s.vision->cut},               {"degraded", s.vision->degraded},
               {"bad_frames", s.vision->bad_frames}, {"missed_frames", s.vision->missed_frames},
-              {"robots", s.vision->robots}};
+              {"robots", s.vision->robots},
+              {"lines_cut", s.vision->lines_cut}};
   }
   return {{"backend", s.backend},
           {"world", s.world},

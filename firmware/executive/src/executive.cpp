@@ -137,6 +137,8 @@ void Executive::run_task(std::size_t index, std::uint64_t frame, Nanos frame_sta
   const Nanos judged = config_.judge_on_model ? modelled : measured;
   if (judged > binding.spec.budget) {
     on_overrun(index, frame, judged);
+  } else if (binding.task->overloaded()) {
+    on_overload(index);
   } else {
     on_budget_met(index);
   }
@@ -177,6 +179,13 @@ void Executive::on_overrun(std::size_t index, std::uint64_t frame, Nanos measure
   } else {
     ++s.suppressed_warnings;
   }
+}
+
+void Executive::on_overload(std::size_t index) noexcept {
+  TaskStats& s = stats_[index];
+  ++s.overloads;
+  s.clean_streak = 0;
+  if (tasks_[index].spec.policy == OverrunPolicy::kDegrade && s.degrade_level < config_.degrade_max_level) ++s.degrade_level;
 }
 
 void Executive::on_budget_met(std::size_t index) noexcept {

@@ -96,6 +96,7 @@ nlohmann::json timing_json(const Executive& exec) {
                      {"runs", s.runs},
                      {"overruns", s.overruns},
                      {"measured_overruns", s.measured_overruns},
+                     {"overloads", s.overloads},
                      {"skipped", s.skipped},
                      {"degraded_runs", s.degraded_runs},
                      {"degrade_level", s.degrade_level},

@@ -90,6 +90,7 @@ hal::CameraPosture VisionTask::posture_at(hal::Nanos when) const noexcept {
 void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   hal::FrameView frame;
   cost_ = kNoFrameCost;
+  overloaded_ = false;
   if (!camera_.grab_latest(frame) || (have_frame_ && frame.sequence == last_sequence_)) return;
   if (have_frame_ && frame.sequence > last_sequence_ + 1) stats_.missed_frames += frame.sequence - last_sequence_ - 1;
   have_frame_ = true;
@@ -99,11 +100,14 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
           ? vision::Deadline{}
           : vision::Deadline::after(*ctx.stopwatch, ctx.time_left(), deadline_ == VisionDeadline::kCpu);
   // Lockstep judges the budget on the modelled cost (run() reports it below): the pipeline fits
-  // what it can cut, the robot classifications, to that instead of to a clock.
+  // what it can cut (RANSAC's trials, then the classifications and the marks) to that instead of
+  // to a clock. A frame whose line search was cut is no overrun, but the task reports itself
+  // overloaded, so that the degrade policy still lowers the next frames' work.
   if (deadline_ == VisionDeadline::kNone) deadline.model_budget = ctx.budget - kNoFrameCost;
   const vision::VisionResult& r = pipeline_->process(frame, posture_at(frame.capture_time), deadline, ctx.degrade_level);
   ++stats_.frames;
   cost_ = kNoFrameCost + vision::modelled_cost(r.work);
+  overloaded_ = r.cut.lines_not_extracted;
   if (r.status != vision::VisionStatus::kOk) {
     ++stats_.bad_frames;
     return;
@@ -112,6 +116,7 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   if (r.line_count > 0) ++stats_.with_lines;
   if (r.ball.seen) ++stats_.with_ball;
   if (r.cut.deadline_hit) ++stats_.cut;
+  if (r.cut.lines_not_extracted) ++stats_.lines_cut;
   if (r.degrade_level > 0) ++stats_.degraded;
   board_.post(vision::to_field_lines(r));
   // Black and white: r.ball is the best verified ball whenever the classifier ran (an unverified

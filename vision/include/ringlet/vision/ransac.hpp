@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -182,11 +183,15 @@ class RansacLineFinder {
   /// endpoints with (k, pose). The deadline is checked before every trial. `circle`: the centre
   /// circle found before (CentreCircleFinder), or none: its points take no part in the line
   /// rounds, pieces lying on it are arcs, and it is the LineSet's circle (unless none was given
-  /// and the rounds find one themselves).
+  /// and the rounds find one themselves). `max_point_tests`: no trial starts whose point tests, as
+  /// the cost model counts them (trials × the first round's sample, plus the second points'
+  /// draws, up to kPartnerDraws each), could pass it (the modelled budget's share, in lockstep);
+  /// like the deadline, it stops the extraction (`stats.stopped_early`).
   void find(std::span<const CandidatePoint> candidates, std::uint64_t frame, const hal::CameraIntrinsics& k,
             const hal::CameraPose& pose, const Deadline& deadline, LineSet& out, int max_trials = -1,
             int max_lines = -1, int skip = -1, int scan_stride = 3, const CentreCircle* circle = nullptr,
-            const LineCheck* check = nullptr) noexcept;
+            const LineCheck* check = nullptr,
+            std::int64_t max_point_tests = std::numeric_limits<std::int64_t>::max()) noexcept;
 
   [[nodiscard]] const RansacParams& params() const noexcept { return params_; }
 

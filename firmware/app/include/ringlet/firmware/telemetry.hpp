@@ -25,6 +25,7 @@ struct VisionStats {
   std::uint64_t with_ball = 0;      // ... in which the ball was found
   std::uint64_t robots = 0;         // robot detections (verified or not) in all
   std::uint64_t cut = 0;            // ... in which the deadline cut work short
+  std::uint64_t lines_cut = 0;      // ... in which it cut the line search (the task was overloaded)
   std::uint64_t degraded = 0;       // ... processed at a degrade level above 0
   std::uint64_t bad_frames = 0;     // frames of the wrong size (nothing done)
   std::uint64_t missed_frames = 0;  // sequence gaps: frames the camera had that were never processed

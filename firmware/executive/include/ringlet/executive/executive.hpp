@@ -80,6 +80,7 @@ class Executive {
   void run_frame(std::uint64_t frame, Nanos frame_start) noexcept;
   void run_task(std::size_t index, std::uint64_t frame, Nanos frame_start) noexcept;
   void on_overrun(std::size_t index, std::uint64_t frame, Nanos measured) noexcept;
+  void on_overload(std::size_t index) noexcept;
   void on_budget_met(std::size_t index) noexcept;
   void count_slipped_activations(std::uint64_t first, std::uint64_t end) noexcept;
   void emit(const Event& e) noexcept;

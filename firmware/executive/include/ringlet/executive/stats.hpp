@@ -12,6 +12,7 @@ struct TaskStats {
   std::uint64_t measured_overruns = 0; // activations whose measured time was over budget (wall or CPU)
   std::uint64_t skipped = 0;           // activations not run: skip policy or frames lost to a slip
   std::uint64_t degraded_runs = 0;     // activations that ran with degrade_level > 0
+  std::uint64_t overloads = 0;         // activations in budget only by cutting needed work (Task::overloaded)
   int degrade_level = 0;
   int clean_streak = 0;                // on-budget activations since the last overrun
   bool skip_next = false;

@@ -49,6 +49,12 @@ class Task {
   /// does not vary returns its nominal cost; the default, zero, is for tasks that are never judged
   /// on a model (tests on scripted clocks).
   [[nodiscard]] virtual Nanos modelled_cost() const noexcept { return Nanos{0}; }
+
+  /// True when the activation that just ran kept its budget only by cutting work it needs, not
+  /// work it may give up (a vision frame whose line search the deadline stopped, against one that
+  /// left out optional classifications). Not an overrun, but the degrade policy acts on it as on
+  /// one: the task is overloaded at its level, and the next activations should do less.
+  [[nodiscard]] virtual bool overloaded() const noexcept { return false; }
 };
 
 }  // namespace ringlet::executive

@@ -35,6 +35,8 @@ class VisionTask final : public executive::Task {
   void run(const executive::TaskContext& ctx) noexcept override;
   /// vision::modelled_cost of the frame processed, or kNoFrameCost when there was none.
   [[nodiscard]] hal::Nanos modelled_cost() const noexcept override { return cost_; }
+  /// The frame's line search was cut (by the deadline or, in lockstep, the modelled budget).
+  [[nodiscard]] bool overloaded() const noexcept override { return overloaded_; }
 
  private:
   [[nodiscard]] hal::CameraPosture posture_at(hal::Nanos when) const noexcept;
@@ -47,6 +49,7 @@ class VisionTask final : public executive::Task {
   bool have_frame_ = false;
   std::uint64_t last_sequence_ = 0;
   hal::Nanos cost_{0};
+  bool overloaded_ = false;
 };
 
 /// The vision pipeline for [camera] and [vision] (its colour table and HOG/SVM models loaded: ConfigError if not).
