@@ -274,9 +274,9 @@ void BwBallDetector::propose(const ClassImage& classes, const hal::FrameView& fr
     double r2 = radius_at({cx, cy});
     if (r2 < params_.min_radius_px) return;
     // The neighbouring columns of a blob already outlined give the same candidate: not refined again.
-    const auto near = [&](const hal::Pixel& o) { return std::abs(o.u - cx) <= 0.5 * r2 && std::abs(o.v - cy) <= 0.5 * r2; };
+    const auto within = [&](const hal::Pixel& o, double half_side) { return std::abs(o.u - cx) <= half_side && std::abs(o.v - cy) <= half_side; };
     for (std::size_t i = 0; i < count_; ++i) {
-      if (cands_[i].roundness > 0.0 && near(cands_[i].centre)) return;
+      if (cands_[i].roundness > 0.0 && within(cands_[i].centre, 0.5 * r2)) return;
     }
     // Only a blob with black on white inside is worth its outline (the costly part), and only once:
     // where an outline failed, its neighbours' would too. (On a robot's white body with its dark
@@ -285,7 +285,7 @@ void BwBallDetector::propose(const ClassImage& classes, const hal::FrameView& fr
     const double raw_contrast = inner_contrast(frame, {cx, cy}, r2);
     refine_samples_ += kContrastSamples;
     const bool failed_here = std::any_of(failed_outlines_.begin(), failed_outlines_.begin() + static_cast<std::ptrdiff_t>(failed_count_),
-                                         [&](const hal::Pixel& o) { return std::abs(o.u - cx) <= r2 && std::abs(o.v - cy) <= r2; });
+                                         [&](const hal::Pixel& o) { return within(o, r2); });
     const bool outlining = raw_contrast >= params_.min_contrast && !failed_here;
     const Outline outline = outlining ? fit_outline(classes, {cx, cy}, r2) : Outline{{cx, cy}, 0.0};
     if (outlining && outline.roundness <= 0.0 && failed_count_ < failed_outlines_.size()) {
