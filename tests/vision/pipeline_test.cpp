@@ -154,6 +154,8 @@ TEST(Pipeline, DeadlineCutsTrialsAndSaysSo) {
   EXPECT_EQ(cut.cut.trials_skipped, 30 - 12);
   EXPECT_GT(cut.cut.points_left, 0);
   EXPECT_EQ(cut.cut.stages_skipped, 0);  // RANSAC started, it was cut short
+  EXPECT_TRUE(cut.cut.lines_cut());
+  EXPECT_FALSE(full.cut.lines_cut());
   EXPECT_TRUE(cut.ball.seen);            // the ball ran before
   EXPECT_LE(cut.line_count, 2U);         // the best of 12 trials is still used (maybe in pieces)
 }
@@ -168,6 +170,8 @@ TEST(Pipeline, ExpiredDeadlineSkipsStages) {
   const auto bit = [](Stage s) { return 1U << static_cast<unsigned>(s); };
   EXPECT_EQ(r.cut.stages_skipped, bit(Stage::kClassify) | bit(Stage::kBall) | bit(Stage::kRobots) | bit(Stage::kScan) |
                                       bit(Stage::kCircle) | bit(Stage::kRansac));
+  EXPECT_FALSE(r.cut.lines_not_extracted);
+  EXPECT_TRUE(r.cut.lines_cut()) << "no line search at all is a cut one";
   EXPECT_FALSE(r.ball.seen);
   EXPECT_EQ(r.line_count, 0U);
 }

@@ -107,7 +107,7 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   const vision::VisionResult& r = pipeline_->process(frame, posture_at(frame.capture_time), deadline, ctx.degrade_level);
   ++stats_.frames;
   cost_ = kNoFrameCost + vision::modelled_cost(r.work);
-  overloaded_ = r.cut.lines_not_extracted;
+  overloaded_ = r.cut.lines_cut();
   if (r.status != vision::VisionStatus::kOk) {
     ++stats_.bad_frames;
     return;
@@ -116,7 +116,7 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   if (r.line_count > 0) ++stats_.with_lines;
   if (r.ball.seen) ++stats_.with_ball;
   if (r.cut.deadline_hit) ++stats_.cut;
-  if (r.cut.lines_not_extracted) ++stats_.lines_cut;
+  if (r.cut.lines_cut()) ++stats_.lines_cut;
   if (r.degrade_level > 0) ++stats_.degraded;
   board_.post(vision::to_field_lines(r));
   // Black and white: r.ball is the best verified ball whenever the classifier ran (an unverified

@@ -97,6 +97,14 @@ struct CutStats {
   bool lines_not_extracted = false;  // extraction stopped before the points ran out
   int points_left = 0;               // used candidate points never examined
   int classifications_cut = 0;       // ball and robot candidates not classified (deadline)
+
+  /// The line search was cut, not only optional work: RANSAC stopped early, or it or a stage it
+  /// needs (classification, the scan) never ran. The firmware's vision task is then overloaded.
+  [[nodiscard]] bool lines_cut() const noexcept {
+    constexpr unsigned kNeeded = (1U << static_cast<unsigned>(Stage::kClassify)) |
+                                 (1U << static_cast<unsigned>(Stage::kScan)) | (1U << static_cast<unsigned>(Stage::kRansac));
+    return lines_not_extracted || (stages_skipped & kNeeded) != 0U;
+  }
 };
 
 struct VisionResult {

@@ -35,7 +35,8 @@ class VisionTask final : public executive::Task {
   void run(const executive::TaskContext& ctx) noexcept override;
   /// vision::modelled_cost of the frame processed, or kNoFrameCost when there was none.
   [[nodiscard]] hal::Nanos modelled_cost() const noexcept override { return cost_; }
-  /// The frame's line search was cut (by the deadline or, in lockstep, the modelled budget).
+  /// The frame's line search was cut (by the deadline or, in lockstep, the modelled budget;
+  /// vision::CutStats::lines_cut).
   [[nodiscard]] bool overloaded() const noexcept override { return overloaded_; }
 
  private:
