@@ -3,6 +3,8 @@
 // levels, and a plain weighted sum.
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -206,16 +208,23 @@ TEST(VisionCost, TheRobotClassificationsFitTheModelledBudget) {
   EXPECT_EQ(modelled_cost(fits.work), modelled_cost(full.work));
 }
 
+// The classifier scene, a pipeline classifying every window it may, and that pipeline's run with
+// no budget (the two tests below cut it to budgets below that run's cost).
+struct ClassifierFrame {
+  testing::Camera cam;
+  testing::Frame frame = testing::render(testing::classifier_scene(), cam, hal::PixelFormat::kYuyv);
+  std::unique_ptr<VisionPipeline> classifying = testing::pipeline_classifying_everything();
+  VisionResult full = classifying->process(frame.view, cam.head);
+};
+
 // The same for the ball's classifications and the marks, which also run after the lines: for any
 // budget from what the uncuttable stages cost up to the whole frame, the frame's modelled cost
 // stays inside it, the lines' trials are never cut, and the ball's windows come before the
 // robots'.
 TEST(VisionCost, TheBallClassificationsAndTheMarksFitTheModelledBudgetToo) {
-  testing::Camera cam;
-  const auto frame = testing::render(testing::classifier_scene(), cam, hal::PixelFormat::kYuyv);
-  const auto classifying = testing::pipeline_classifying_everything();
+  ClassifierFrame c;
+  auto& [cam, frame, classifying, full] = c;
   VisionPipeline& pipeline = *classifying;
-  const VisionResult full = pipeline.process(frame.view, cam.head);
   ASSERT_GT(full.work.ball_windows, 0);
   WorkCount base = full.work;
   base.ball_windows = 0;
@@ -249,11 +258,9 @@ TEST(VisionCost, TheBallClassificationsAndTheMarksFitTheModelledBudgetToo) {
 // stays inside it, its line search is reported cut (the vision task is then overloaded), and the
 // classifiers and the marks get nothing.
 TEST(VisionCost, RansacsTrialsFitTheModelledBudgetWhenTheLinesNeedMore) {
-  testing::Camera cam;
-  const auto frame = testing::render(testing::classifier_scene(), cam, hal::PixelFormat::kYuyv);
-  const auto classifying = testing::pipeline_classifying_everything();
+  ClassifierFrame c;
+  auto& [cam, frame, classifying, full] = c;
   VisionPipeline& pipeline = *classifying;
-  const VisionResult full = pipeline.process(frame.view, cam.head);
   ASSERT_GT(full.ransac.trials_run, 20);
   WorkCount before = full.work;  // the work before RANSAC's trials
   before.ball_windows = 0;
