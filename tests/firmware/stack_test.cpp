@@ -134,9 +134,16 @@ TEST(FirmwareVision, LinesAndBallAreDetectedAndTheHeadFollowsTheDetectedBall) {
   EXPECT_GT(r.summary.truth->head.on_target_share(), 0.7);
   EXPECT_GE(r.vision_timing.runs, v.frames);
   EXPECT_LE(r.vision_timing.runs - v.frames, 2U) << "only the activations before the first frame have nothing to do";
+  EXPECT_GT(v.robots, 0U) << "the field's robots are found by HOG";
+  // The whole pipeline (lines, circle, marks, the black-and-white ball and the robots, both
+  // verified by HOG/SVM) is an anytime pipeline: the classifiers take what the budget leaves, and
+  // the line search is cut only rarely. Such a frame is overloaded, not an overrun, and the degrade
+  // policy acts on it for a while (vision/README.md, "The modelled budget").
   EXPECT_EQ(r.vision_timing.overruns, 0U);
-  EXPECT_EQ(r.vision_timing.degraded_runs, 0U);
-  EXPECT_LT(r.vision_timing.model.percentile(0.99), hal::Nanos{3'000'000}) << "inside the 3 ms vision budget";
+  EXPECT_LE(v.lines_cut * 20, v.frames) << "the line search cut in at most 5 % of the frames";
+  EXPECT_EQ(r.vision_timing.overloads, v.lines_cut);
+  EXPECT_LE(r.vision_timing.degraded_runs * 4, r.vision_timing.runs) << "at level 0 in at least 3 of 4 runs";
+  EXPECT_LE(r.vision_timing.model.percentile(0.99), hal::Nanos{3'000'000}) << "inside the 3 ms vision budget";
   EXPECT_GT(r.vision_timing.model.min(), hal::Nanos{0});
 }
 

@@ -65,10 +65,10 @@ class VisionCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  // The shipped SPL world draws the orange ball ("look spl orange"), so its detector is asked for:
-  // the black-and-white detector ranks candidates by their black-on-white contrast.
+  // The shipped SPL world draws the SPL's black-and-white ball ("look spl bw"): the tool's default
+  // detector, verified by the shipped model, as a new user runs it.
   [[nodiscard]] std::string head_flags() const {
-    return "--ball-mode orange --yaw " + std::to_string(yaw_deg_) + " --pitch " + std::to_string(pitch_deg_);
+    return "--yaw " + std::to_string(yaw_deg_) + " --pitch " + std::to_string(pitch_deg_);
   }
 
   void expect_lines_and_ball(const std::string& image) {
@@ -337,7 +337,7 @@ TEST_F(VisionCli, BodyTiltFlagsPutTheBallWhereItIs) {
   const cv::Mat bgr(480, 640, CV_8UC3, const_cast<std::uint8_t*>(renderer.bgr().data()));
   const fs::path file = dir_ / "tilted.png";
   ASSERT_TRUE(cv::imwrite(file.string(), bgr));
-  const std::string head = "--ball-mode orange --yaw " + std::to_string(yaw_deg_) + " --pitch " + std::to_string(pitch_deg_ - 6.0);
+  const std::string head = "--yaw " + std::to_string(yaw_deg_) + " --pitch " + std::to_string(pitch_deg_ - 6.0);
 
   const ToolRun r = run(file.string() + " " + head + " --body-pitch 6 --body-roll 4 --compact");
   ASSERT_EQ(r.rc, 0) << r.out;
