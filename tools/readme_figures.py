@@ -89,6 +89,8 @@ def firmware_figures(report):
             "vision.lines_per_frame": vision["lines"] / frames if frames else 0.0,
             "vision.ball_pct": share(vision["with_ball"]),
             "vision.cut": vision["cut"],
+            "vision.lines_cut": vision["lines_cut"],
+            "vision.robots": vision["robots"],
             "vision.degraded": vision["degraded"],
             "vision.missed": vision["missed_frames"],
         })

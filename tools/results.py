@@ -261,9 +261,13 @@ def results_markdown(fx, missions, skipped, realtime, vision, plans, commands):
             v = m["vision"]
             n = v["frames"] or 1
             md.append(f"Vision: {v['frames']} frames, lines in {f(100 * v['with_lines'] / n)} % "
-                      f"({f(v['lines'] / n)} per frame), ball in {f(100 * v['with_ball'] / n)} %, "
-                      f"cut by the deadline {v['cut']}, degraded {v['degraded']}, bad {v['bad_frames']}, "
+                      f"({f(v['lines'] / n)} per frame), ball in {f(100 * v['with_ball'] / n)} %, robots {v['robots']}, "
+                      f"cut by the deadline {v['cut']} (the line search {v['lines_cut']}), degraded {v['degraded']}, "
+                      f"bad {v['bad_frames']}, "
                       f"missed {v['missed_frames']}.")
+            if v.get("stage_model"):
+                md.append("Vision by stage, modelled board time per frame (p50 / p99 µs): " + ", ".join(
+                    f"{name} {f(h['p50_us'], 0)} / {f(h['p99_us'], 0)}" for name, h in v["stage_model"].items()) + ".")
         h = m.get("head_tracking")
         if h and h["frames"]:
             md.append(f"Head on the true ball (yaw within 5°): {f(100 * h['on_target_share'])} % of {h['frames']} "

@@ -13,6 +13,7 @@
 #include "ringlet/firmware/mission_report.hpp"
 #include "ringlet/firmware/mission_runner.hpp"
 #include "ringlet/firmware/stack.hpp"
+#include "ringlet/firmware/tasks/vision_task.hpp"
 #include "ringlet/firmware/telemetry.hpp"
 
 namespace ringlet::firmware {
@@ -145,6 +146,22 @@ TEST(FirmwareVision, LinesAndBallAreDetectedAndTheHeadFollowsTheDetectedBall) {
   EXPECT_LE(r.vision_timing.degraded_runs * 4, r.vision_timing.runs) << "at level 0 in at least 3 of 4 runs";
   EXPECT_LE(r.vision_timing.model.percentile(0.99), hal::Nanos{3'000'000}) << "inside the 3 ms vision budget";
   EXPECT_GT(r.vision_timing.model.min(), hal::Nanos{0});
+
+  // Where the budget went (the report's breakdown by stage): one sample per frame and stage, adding
+  // up to the model the executive judged (which adds VisionTask::kNoFrameCost per activation).
+  std::int64_t staged_ns = 0;
+  for (const auto& h : v.stage_model) {
+    EXPECT_EQ(h.count(), v.frames);
+    staged_ns += h.mean().count() * static_cast<std::int64_t>(h.count());
+  }
+  const auto runs = static_cast<std::int64_t>(r.vision_timing.runs);
+  const std::int64_t judged_ns = (r.vision_timing.model.mean() - VisionTask::kNoFrameCost).count() * runs;
+  EXPECT_NEAR(static_cast<double>(staged_ns), static_cast<double>(judged_ns), 16.0 * static_cast<double>(runs));
+  const nlohmann::json stages = summary_json(r.summary).at("vision").at("stage_model");
+  ASSERT_EQ(stages.size(), vision::kStageCount) << stages.dump();
+  for (const char* busy : {"classify", "scan", "ransac", "ball", "robots"}) {
+    EXPECT_GT(stages.at(busy).at("p50_us").get<double>(), 0.0) << busy << " did work in most frames";
+  }
 }
 
 TEST(FirmwareVision, SameSeedSameRunWithTheCamera) {

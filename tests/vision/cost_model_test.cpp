@@ -7,11 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 #include <vector>
 
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "ringlet/vision/robots.hpp"
+#include "ringlet/vision/stages.hpp"
 #include "classify_everything.hpp"
 #include "synthetic_field.hpp"
 
@@ -306,6 +308,48 @@ TEST(VisionCost, TheModelIsAWeightedSumTimesTheBoardFactor) {
   EXPECT_EQ(modelled_cost(w, m),
             hal::Nanos{2 * (100 + 10 + 40 + 90 + 160 + 250 + 360 + 7 + 640 + 810 + 1000 + 1210)});
   EXPECT_EQ(modelled_cost(WorkCount{}, m), hal::Nanos{200});
+}
+
+// The report's breakdown: every row of the model lands in exactly the stage that does that work,
+// and the stages add up to the frame. A new WorkCount row left out of host_cost_by_stage fails here.
+TEST(VisionStages, EveryRowOfTheModelBelongsToTheStageThatDoesTheWork) {
+  const auto only = [](auto field) {
+    WorkCount w;
+    w.*field = 1000;
+    return host_cost_by_stage(host_cost(w));
+  };
+  const auto stage_of = [&](auto field) {
+    const auto by_stage = only(field);
+    const auto base = host_cost_by_stage(host_cost(WorkCount{}));
+    std::vector<std::string_view> grew;
+    for (std::size_t s = 0; s < kStageCount; ++s) {
+      if (by_stage[s] != base[s]) grew.push_back(stage_name(static_cast<Stage>(s)));
+    }
+    return grew;
+  };
+  using V = std::vector<std::string_view>;
+  EXPECT_EQ(stage_of(&WorkCount::classified_pixels), V{"classify"});
+  EXPECT_EQ(stage_of(&WorkCount::colour_samples), V{"classify"});
+  EXPECT_EQ(stage_of(&WorkCount::colour_rebuilds), V{"classify"});
+  EXPECT_EQ(stage_of(&WorkCount::ball_samples), V{"ball"});
+  EXPECT_EQ(stage_of(&WorkCount::ball_windows), V{"ball"});
+  EXPECT_EQ(stage_of(&WorkCount::scanned_pixels), V{"scan"});
+  EXPECT_EQ(stage_of(&WorkCount::candidates), V{"scan"});
+  EXPECT_EQ(stage_of(&WorkCount::point_tests), V{"ransac"});
+  EXPECT_EQ(stage_of(&WorkCount::circle_tests), V{"circle"});
+  EXPECT_EQ(stage_of(&WorkCount::robot_samples), V{"robots"});
+  EXPECT_EQ(stage_of(&WorkCount::robot_windows), V{"robots"});
+  EXPECT_EQ(host_cost_by_stage(host_cost(WorkCount{}))[static_cast<std::size_t>(Stage::kHorizon)], default_cost_model().fixed_ns);
+
+  // A real frame's work: the stages add up to the frame, and every stage has its own name.
+  const WorkCount w{123456, 2345, 34567, 4567, 56789, 6789, 1, 8901, 3, 4, 12345};
+  const auto by_stage = host_cost_by_stage(host_cost(w));
+  double sum = 0.0;
+  for (const double ns : by_stage) sum += ns;
+  EXPECT_NEAR(sum, host_cost(w).total(), 1e-9 * host_cost(w).total());
+  std::vector<std::string_view> names;
+  for (std::size_t s = 0; s < kStageCount; ++s) names.push_back(stage_name(static_cast<Stage>(s)));
+  EXPECT_EQ(names, (V{"horizon", "classify", "ball", "scan", "ransac", "circle", "robots"}));
 }
 
 }  // namespace

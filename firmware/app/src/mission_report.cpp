@@ -4,7 +4,10 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <string>
 
+#include "ringlet/executive/report.hpp"
+#include "ringlet/vision/stages.hpp"
 
 namespace ringlet::firmware {
 
@@ -161,13 +164,24 @@ void print_summary(std::ostream& out, const MissionSummary& s) {
     const VisionStats& v = *s.vision;
     const auto share = [&v](std::uint64_t n) { return v.frames == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(v.frames); };
     std::snprintf(line, sizeof line,
-                  "  vision: %llu frames, lines in %.1f %% (%.1f per frame), ball in %.1f %%, cut by the deadline %llu, "
-                  "degraded %llu, frames missed %llu\n",
+                  "  vision: %llu frames, lines in %.1f %% (%.1f per frame), ball in %.1f %%, robots %llu, "
+                  "cut by the deadline %llu (the line search %llu), degraded %llu, frames missed %llu\n",
                   static_cast<unsigned long long>(v.frames), share(v.with_lines),
                   v.frames == 0 ? 0.0 : static_cast<double>(v.lines) / static_cast<double>(v.frames), share(v.with_ball),
-                  static_cast<unsigned long long>(v.cut), static_cast<unsigned long long>(v.degraded),
+                  static_cast<unsigned long long>(v.robots), static_cast<unsigned long long>(v.cut),
+                  static_cast<unsigned long long>(v.lines_cut), static_cast<unsigned long long>(v.degraded),
                   static_cast<unsigned long long>(v.missed_frames));
     out << line;
+    // Where the budget goes: each stage's modelled board time per frame (the cost model's rows).
+    out << "  vision by stage, modelled on the board, p50/p99 us:";
+    for (std::size_t i = 0; i < vision::kStageCount; ++i) {
+      const executive::DurationHistogram& h = v.stage_model[i];
+      std::snprintf(line, sizeof line, "%s %s %.0f/%.0f", i == 0 ? "" : ",",
+                    std::string(vision::stage_name(static_cast<vision::Stage>(i))).c_str(),
+                    static_cast<double>(h.percentile(0.50).count()) / 1e3, static_cast<double>(h.percentile(0.99).count()) / 1e3);
+      out << line;
+    }
+    out << "\n";
   }
   if (s.remote) {
     const RemoteSummary& r = *s.remote;
@@ -291,6 +305,11 @@ nlohmann::json summary_json(const MissionSummary& s) {
               {"bad_frames", s.vision->bad_frames}, {"missed_frames", s.vision->missed_frames},
               {"robots", s.vision->robots},
               {"lines_cut", s.vision->lines_cut}};
+    nlohmann::json stages = nlohmann::json::object();
+    for (std::size_t i = 0; i < vision::kStageCount; ++i) {
+      stages[std::string(vision::stage_name(static_cast<vision::Stage>(i)))] = executive::histogram_json(s.vision->stage_model[i]);
+    }
+    vision["stage_model"] = std::move(stages);  // modelled board time per frame, by stage
   }
   return {{"backend", s.backend},
           {"world", s.world},

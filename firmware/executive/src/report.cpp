@@ -34,12 +34,12 @@ const char* judged_on_tag(const ExecutiveConfig& c) {
   return c.overrun_on_cpu_time ? "cpu" : "wall";
 }
 
+}  // namespace
+
 nlohmann::json histogram_json(const DurationHistogram& h) {
   return {{"min_us", us(h.min())},       {"mean_us", us(h.mean())},         {"p50_us", us(h.percentile(0.50))},
           {"p99_us", us(h.percentile(0.99))}, {"p999_us", us(h.percentile(0.999))}, {"max_us", us(h.max())}};
 }
-
-}  // namespace
 
 void print_timing_table(std::ostream& out, const Executive& exec) {
   const auto& c = exec.config();

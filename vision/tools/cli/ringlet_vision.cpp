@@ -27,6 +27,7 @@
 #include "ringlet/hal/monotonic_clock.hpp"
 #include "ringlet/vision/pipeline.hpp"
 #include "ringlet/vision/pitch_check.hpp"
+#include "ringlet/vision/stages.hpp"
 #include "class_drawing.hpp"
 #include "dataset_frame.hpp"
 #include "vision_io.hpp"
@@ -191,7 +192,7 @@ int run(const Options& o) {
     const tools::TimeStats total = tools::time_stats(cpu);
     const tools::TimeStats wall_stats = tools::time_stats(wall);
     nlohmann::json per_stage = nlohmann::json::object();
-    for (std::size_t s = 0; s < kStageCount; ++s) per_stage[tools::stage_name(s)] = tools::to_json(tools::time_stats(stages[s]));
+    for (std::size_t s = 0; s < kStageCount; ++s) per_stage[std::string(stage_name(static_cast<Stage>(s)))] = tools::to_json(tools::time_stats(stages[s]));
     out["timing"] = {{"repeat", o.repeat}, {"total_ms", tools::to_json(total)}, {"wall_ms", tools::to_json(wall_stats)},
                      {"stages_ms", per_stage}};
     std::cerr << std::fixed << std::setprecision(3) << "ringlet-vision: " << o.repeat

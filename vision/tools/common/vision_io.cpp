@@ -13,6 +13,7 @@
 #include "ringlet/hal/image_header.hpp"
 #include "ringlet/hal/read_file.hpp"
 #include "ringlet/vision/horizon.hpp"
+#include "ringlet/vision/stages.hpp"
 
 namespace ringlet::vision::tools {
 
@@ -323,27 +324,13 @@ nlohmann::json result_json(const VisionResult& r) {
   return out;
 }
 
-std::string stage_name(std::size_t stage) {
-  switch (static_cast<Stage>(stage)) {
-    case Stage::kHorizon: return "horizon";
-    case Stage::kClassify: return "classify";
-    case Stage::kBall: return "ball";
-    case Stage::kScan: return "scan";
-    case Stage::kRansac: return "ransac";
-    case Stage::kCircle: return "circle";
-    case Stage::kRobots: return "robots";
-    case Stage::kCount: break;  // no default: a stage added without a name here is a -Wswitch error
-  }
-  return "stage " + std::to_string(stage);
-}
-
 namespace {
 double to_ms(hal::Nanos t) { return static_cast<double>(t.count()) / 1e6; }
 }  // namespace
 
 nlohmann::json stage_times_json(const VisionResult& r) {
   nlohmann::json out = nlohmann::json::object();
-  for (std::size_t i = 0; i < kStageCount; ++i) out[stage_name(i)] = to_ms(r.stage_time[i]);
+  for (std::size_t i = 0; i < kStageCount; ++i) out[std::string(stage_name(static_cast<Stage>(i)))] = to_ms(r.stage_time[i]);
   out["total"] = to_ms(r.total_time);
   return out;
 }

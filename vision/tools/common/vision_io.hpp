@@ -132,8 +132,6 @@ struct CameraOptions {
 
 [[nodiscard]] nlohmann::json result_json(const VisionResult& result);
 
-/// The name of a pipeline stage in the JSON ("horizon", "classify", ...).
-[[nodiscard]] std::string stage_name(std::size_t stage);
 /// A frame's time per stage and in total, in ms ({"horizon": 0.01, ..., "total": 1.2}).
 [[nodiscard]] nlohmann::json stage_times_json(const VisionResult& result);
 

@@ -15,6 +15,7 @@
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/horizon.hpp"
 #include "ringlet/vision/pitch_check.hpp"
+#include "ringlet/vision/stages.hpp"
 #include "vision_io.hpp"
 
 namespace ringlet::vision::evaluate {
@@ -86,14 +87,7 @@ struct HoughRun {
 void record_model(const VisionResult& result, EvalReport& report) {
   const HostCost c = host_cost(result.work);
   report.model_host_ms.push_back(c.total() / 1e6);
-  std::array<double, kStageCount> modelled_ns{};
-  modelled_ns[static_cast<std::size_t>(Stage::kHorizon)] = c.fixed;
-  modelled_ns[static_cast<std::size_t>(Stage::kClassify)] = c.colour_samples + c.colour_rebuilds + c.classified_pixels;
-  modelled_ns[static_cast<std::size_t>(Stage::kBall)] = c.ball_samples + c.ball_windows;
-  modelled_ns[static_cast<std::size_t>(Stage::kRobots)] = c.robot_samples + c.robot_windows;
-  modelled_ns[static_cast<std::size_t>(Stage::kScan)] = c.scanned_pixels + c.candidates;
-  modelled_ns[static_cast<std::size_t>(Stage::kCircle)] = c.circle_tests;
-  modelled_ns[static_cast<std::size_t>(Stage::kRansac)] = c.point_tests;  // the lines' and the marks'
+  const std::array<double, kStageCount> modelled_ns = host_cost_by_stage(c);
   for (std::size_t s = 0; s < kStageCount; ++s) {
     report.stage_times[s].measured_ms.push_back(hal::to_seconds(result.stage_time[s]) * 1e3);
     report.stage_times[s].modelled_ms.push_back(modelled_ns[s] / 1e6);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "ringlet/vision/stages.hpp"
 #include "vision_io.hpp"
 
 namespace ringlet::vision::evaluate {
@@ -213,7 +214,7 @@ void print_report(const EvalReport& r, std::ostream& os) {
   os << "  by stage, median measured / modelled ms:";
   for (std::size_t s = 0; s < kStageCount; ++s) {
     const auto& t = r.stage_times[s];
-    os << " " << tools::stage_name(s) << " " << fmt("%.3f", percentile(t.measured_ms, 50.0)) << "/"
+    os << " " << stage_name(static_cast<Stage>(s)) << " " << fmt("%.3f", percentile(t.measured_ms, 50.0)) << "/"
        << fmt("%.3f", percentile(t.modelled_ms, 50.0));
   }
   os << "\n";
@@ -247,7 +248,7 @@ nlohmann::json stage_json(const EvalReport& r) {
   nlohmann::json out = nlohmann::json::object();
   for (std::size_t s = 0; s < kStageCount; ++s) {
     const auto& t = r.stage_times[s];
-    out[tools::stage_name(s)] = {{"measured_median_ms", percentile(t.measured_ms, 50.0)},
+    out[std::string(stage_name(static_cast<Stage>(s)))] = {{"measured_median_ms", percentile(t.measured_ms, 50.0)},
                                  {"modelled_median_ms", percentile(t.modelled_ms, 50.0)}};
   }
   return out;

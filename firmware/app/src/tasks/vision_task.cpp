@@ -1,7 +1,10 @@
 #include "ringlet/firmware/tasks/vision_task.hpp"
 
+#include <cmath>
+
 #include "ringlet/vision/cost_model.hpp"
 #include "ringlet/vision/messages.hpp"
+#include "ringlet/vision/stages.hpp"
 
 namespace ringlet::firmware {
 
@@ -87,6 +90,15 @@ hal::CameraPosture VisionTask::posture_at(hal::Nanos when) const noexcept {
   return best;
 }
 
+void VisionTask::record_stage_costs(const vision::WorkCount& work) noexcept {
+  // The same model as cost_, row by row: a few multiplications, nothing the run depends on.
+  const vision::CostModel model = vision::default_cost_model();
+  const auto by_stage = vision::host_cost_by_stage(vision::host_cost(work, model));
+  for (std::size_t s = 0; s < vision::kStageCount; ++s) {
+    stats_.stage_model[s].record(hal::Nanos{static_cast<std::int64_t>(std::llround(by_stage[s] * model.board_slowdown))});
+  }
+}
+
 void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   hal::FrameView frame;
   cost_ = kNoFrameCost;
@@ -107,6 +119,7 @@ void VisionTask::run(const executive::TaskContext& ctx) noexcept {
   const vision::VisionResult& r = pipeline_->process(frame, posture_at(frame.capture_time), deadline, ctx.degrade_level);
   ++stats_.frames;
   cost_ = kNoFrameCost + vision::modelled_cost(r.work);
+  record_stage_costs(r.work);
   overloaded_ = r.cut.lines_cut();
   if (r.status != vision::VisionStatus::kOk) {
     ++stats_.bad_frames;

@@ -25,6 +25,7 @@
 #include "ringlet/vision/ransac.hpp"
 #include "ringlet/vision/robots.hpp"
 #include "ringlet/vision/scan_points.hpp"
+#include "ringlet/vision/stages.hpp"
 
 namespace ringlet::vision {
 
@@ -80,10 +81,6 @@ struct VisionConfig {
   }};
 };
 
-// In enum order, not run order (horizon, classify, ball, robots, scan, circle, RANSAC): the later
-// stages were appended so that the older stages keep their bits in CutStats::stages_skipped.
-enum class Stage : std::uint8_t { kHorizon, kClassify, kBall, kScan, kRansac, kCircle, kRobots, kCount };
-inline constexpr std::size_t kStageCount = static_cast<std::size_t>(Stage::kCount);
 
 enum class VisionStatus : std::uint8_t {
   kOk,

@@ -11,9 +11,11 @@
 #include <string_view>
 #include <vector>
 
+#include "ringlet/executive/histogram.hpp"
 #include "ringlet/hal/geometry.hpp"
 #include "ringlet/hal/ground_truth.hpp"
 #include "ringlet/hal/time.hpp"
+#include "ringlet/vision/stages.hpp"
 
 namespace ringlet::firmware {
 
@@ -29,6 +31,9 @@ struct VisionStats {
   std::uint64_t degraded = 0;       // ... processed at a degrade level above 0
   std::uint64_t bad_frames = 0;     // frames of the wrong size (nothing done)
   std::uint64_t missed_frames = 0;  // sequence gaps: frames the camera had that were never processed
+  // Per processed frame, each pipeline stage's modelled board time (vision::Stage order): where the
+  // budget goes. Observed only: neither the run hash nor any decision reads it.
+  std::array<executive::DurationHistogram, vision::kStageCount> stage_model{};
 };
 
 /// The planner's map and plans over the run (PlanRecordTask fills it): every cell the planner

@@ -17,6 +17,9 @@ void print_timing_table(std::ostream& out, const Executive& exec);
 /// The same data (and p99.9, CPU min/avg/max) as JSON; durations in microseconds.
 [[nodiscard]] nlohmann::json timing_json(const Executive& exec);
 
+/// A histogram's min, mean, p50, p99, p99.9 and max in microseconds (the keys timing_json uses).
+[[nodiscard]] nlohmann::json histogram_json(const DurationHistogram& h);
+
 /// One line describing an event, for the non-real-time log drain.
 [[nodiscard]] std::string describe(const Event& event, const Executive& exec);
 

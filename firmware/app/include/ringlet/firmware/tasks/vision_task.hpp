@@ -41,6 +41,8 @@ class VisionTask final : public executive::Task {
 
  private:
   [[nodiscard]] hal::CameraPosture posture_at(hal::Nanos when) const noexcept;
+  /// Each stage's modelled board time into stats_.stage_model (the mission report's breakdown).
+  void record_stage_costs(const vision::WorkCount& work) noexcept;
 
   hal::Camera& camera_;
   std::unique_ptr<vision::VisionPipeline> pipeline_;
