@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <array>
@@ -73,6 +74,70 @@ TEST_F(MachinesTest, BallTrackerPointsTheHeadAtTheBall) {
   sched.run_turn(3ms);
   sched.run_turn(4ms);
   EXPECT_DOUBLE_EQ(board.get<wb::HeadCommand>().yaw, -2.0);
+}
+
+// Loop sees the ball in one ringlet and UpdateHead aims in the next, from a newer snapshot: when
+// vision has posted "gone" in between (x = y = 0), the head stays where it aimed last, instead of
+// turning to the front and pitching down at its own feet.
+TEST_F(MachinesTest, BallTrackerKeepsItsAimWhenTheBallIsGoneByTheTimeItAims) {
+  sched.add(tracker);
+  sched.run_turn(0ns);  // Init -> Loop
+  wb::BallBelief ball{};
+  ball.visible = true;
+  ball.x = 0.5;
+  ball.y = 1.5;
+  board.post(ball);
+  sched.run_turn(1ms);  // Loop -> UpdateHead
+  sched.run_turn(2ms);  // UpdateHead aims
+  const wb::HeadCommand aimed = board.get<wb::HeadCommand>();
+  ASSERT_NEAR(aimed.yaw, std::atan2(1.5, 0.5), 1e-12);
+  sched.run_turn(3ms);  // Loop sees the ball again -> UpdateHead
+  ASSERT_EQ(tracker.current_state_name(), "UpdateHead");
+  board.post(wb::BallBelief{});  // gone before UpdateHead's ringlet reads its snapshot
+  sched.run_turn(4ms);
+  EXPECT_EQ(board.get<wb::HeadCommand>().yaw, aimed.yaw);
+  EXPECT_EQ(board.get<wb::HeadCommand>().pitch, aimed.pitch);
+}
+
+// A ball lost from view (e.g. behind a robot's legs) is searched for from where the head last
+// aimed at it: the sweep starts there and rises, instead of swinging back to the front first.
+TEST_F(MachinesTest, BallTrackerSearchesFromWhereItLastSawTheBall) {
+  sched.add(tracker);
+  hal::Nanos t{0};
+  const auto turn = [&] {
+    sched.run_turn(t);
+    t += 10ms;
+  };
+  turn();  // Init -> Loop
+  wb::BallBelief ball{};
+  ball.visible = true;
+  ball.x = 0.2;  // far to the left: yaw 1.37 rad
+  ball.y = 1.0;
+  board.post(ball);
+  turn();
+  turn();
+  const double aimed = std::atan2(1.0, 0.2);
+  ASSERT_NEAR(board.get<wb::HeadCommand>().yaw, aimed, 1e-12);
+  ball.visible = false;
+  board.post(ball);
+  for (int i = 0; i < 40; ++i) turn();  // lost for 400 ms: the head holds still meanwhile
+  EXPECT_EQ(tracker.current_state_name(), "Loop");
+  EXPECT_NEAR(board.get<wb::HeadCommand>().yaw, aimed, 1e-12);
+  for (int i = 0; i < 20 && tracker.current_state_name() != "Search"; ++i) turn();  // lost_ms 500
+  ASSERT_EQ(tracker.current_state_name(), "Search");
+  turn();  // the sweep's first command (the swing of the old sweep began at the front, yaw 0)
+  const double first = board.get<wb::HeadCommand>().yaw;
+  EXPECT_NEAR(first, aimed, 0.02) << "the sweep starts where the ball was";
+  turn();
+  const double rising = board.get<wb::HeadCommand>().yaw;
+  EXPECT_GT(rising, first) << "and first goes on the same way";
+  double lowest = rising;
+  for (int i = 0; i < 400; ++i) {  // 4 s: more than a whole sweep (2π / 1.2 rad/s = 5.2 s) half over
+    turn();
+    lowest = std::min(lowest, board.get<wb::HeadCommand>().yaw);
+  }
+  EXPECT_LT(lowest, -1.4) << "then sweeps the other side too";
+  EXPECT_NEAR(board.get<wb::HeadCommand>().pitch, 0.35, 1e-12);
 }
 
 TEST_F(MachinesTest, SafetyStopsWithHysteresisAndHoldsTheMission) {
